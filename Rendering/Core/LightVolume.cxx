@@ -1,0 +1,161 @@
+#include "LightVolume.h"
+
+#include "Parallel.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+namespace avs
+{
+
+namespace
+{
+inline double SampleLocal(const Grid& g, const Vec3& local)
+{
+  const Vec3& s = g.Geometry.Spacing;
+  return g.SampleIndex({ local.x / s.x, local.y / s.y, local.z / s.z }, 0.0);
+}
+
+// Start of the light path towards local point o, in the local frame of `geometry`.
+// Returns false when the light cannot reach o (no path inside the box).
+bool LightPathStart(const GridGeometry& geometry, const Light& light, const Vec3& o, Vec3& x0)
+{
+  const Vec3 extent = geometry.LocalExtent();
+  double t0, t1;
+  if (light.Type == LightType::Directional)
+  {
+    const Vec3 d = geometry.WorldToLocalDirection(light.PropagationDirection(o));
+    if (!IntersectBox(extent, o, -d, t0, t1))
+    {
+      x0 = o;
+      return true;
+    }
+    x0 = o - d * std::max(0.0, t1);
+    return true;
+  }
+  const Vec3 p = geometry.WorldToLocal(light.Position);
+  const double eps = 1e-9 * (1.0 + Length(extent));
+  const bool inside = p.x >= -eps && p.y >= -eps && p.z >= -eps && p.x <= extent.x + eps &&
+    p.y <= extent.y + eps && p.z <= extent.z + eps;
+  if (inside)
+  {
+    x0 = p;
+    return true;
+  }
+  const double dist = Length(o - p);
+  if (!(dist > 0.0))
+  {
+    x0 = o;
+    return true;
+  }
+  const Vec3 u = (o - p) * (1.0 / dist);
+  if (!IntersectBox(extent, p, u, t0, t1))
+  {
+    x0 = o;
+    return true;
+  }
+  x0 = p + u * std::clamp(t0, 0.0, dist);
+  return true;
+}
+
+double March(const Grid& averaged, const ScatteringSlice& slice, double radius, const Vec3& x0,
+  const Vec3& x, std::uint64_t& steps)
+{
+  const double distance = Length(x - x0);
+  if (!(distance > 0.0))
+  {
+    return 1.0;
+  }
+  const Vec3 d = (x - x0) * (1.0 / distance);
+  const double ratio = distance / (2.0 * radius);
+  const auto n = static_cast<std::int64_t>(std::floor(ratio));
+  const double eta = ratio - static_cast<double>(n);
+  double t = 1.0;
+  double tn = 1.0;
+  for (std::int64_t i = 1; i <= n + 1; ++i)
+  {
+    const Vec3 m = x0 + d * ((2.0 * (i - 1) + 1.0) * radius);
+    const double tau = radius * SampleLocal(averaged, m);
+    tn = t;
+    t *= slice.ForwardTransport(tau);
+    ++steps;
+  }
+  // tn = T(x_n), t = T(x_{n+1}).
+  return (1.0 - eta) * tn + eta * t;
+}
+} // namespace
+
+std::array<int, 3> LightVolumeDimensions(const std::array<int, 3>& dims, int maximum)
+{
+  const int largest = std::max({ dims[0], dims[1], dims[2] });
+  std::array<int, 3> out = dims;
+  if (largest > maximum && maximum >= 2)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      out[a] = std::max(2, static_cast<int>(std::lround(
+                             static_cast<double>(dims[a]) * maximum / largest)));
+      out[a] = std::min(out[a], dims[a]);
+    }
+  }
+  return out;
+}
+
+double TubeTransmittance(const Grid& averaged, const Light& light, const ScatteringSlice& slice,
+  double radius, const Vec3& world, std::uint64_t* steps)
+{
+  const GridGeometry& geometry = averaged.Geometry;
+  const Vec3 o = geometry.WorldToLocal(world);
+  Vec3 x0;
+  LightPathStart(geometry, light, o, x0);
+  std::uint64_t count = 0;
+  const double t = March(averaged, slice, radius, x0, o, count);
+  if (steps)
+  {
+    *steps += count;
+  }
+  return t;
+}
+
+Grid ComputeLightVolume(const Grid& averaged, const GridGeometry& target, const Light& light,
+  const ScatteringSlice& slice, double radius, LightVolumeStatistics* statistics,
+  const std::function<void(double)>& progress)
+{
+  Grid out(target, 1.0f);
+  const auto& dims = target.Dimensions;
+  std::atomic<std::uint64_t> steps{ 0 };
+  std::atomic<int> slicesDone{ 0 };
+  const std::thread::id caller = std::this_thread::get_id();
+  ParallelFor(dims[2], [&](std::int64_t b, std::int64_t e) {
+    std::uint64_t local = 0;
+    for (std::int64_t k = b; k < e; ++k)
+    {
+      for (int j = 0; j < dims[1]; ++j)
+      {
+        for (int i = 0; i < dims[0]; ++i)
+        {
+          const Vec3 world = target.IndexToWorld({ static_cast<double>(i), static_cast<double>(j),
+            static_cast<double>(k) });
+          out.At(i, j, static_cast<int>(k)) = static_cast<float>(
+            TubeTransmittance(averaged, light, slice, radius, world, &local));
+        }
+      }
+      const int done = ++slicesDone;
+      // Progress is reported from the calling thread only (VTK observers are not thread-safe).
+      if (progress && std::this_thread::get_id() == caller)
+      {
+        progress(static_cast<double>(done) / dims[2]);
+      }
+    }
+    steps += local;
+  });
+  if (statistics)
+  {
+    statistics->Steps = steps.load();
+  }
+  return out;
+}
+
+} // namespace avs

@@ -1,0 +1,43 @@
+// Light volumes by tube marching (ALGORITHM.md section 5).
+//
+// For each voxel centre x of the target grid, the light path runs from x0 (where the light
+// enters the volume box, or the point light itself when it is inside the box) to x. Balls of
+// radius r are chained along it: T(x0) = 1, T(x_i) = T(x_{i-1}) F(r avg_sigma_t(m_i)) with
+// x_i = x0 + 2 r i d and m_i = x_{i-1} + r d, and T(x) interpolates linearly between T(x_n)
+// and T(x_{n+1}) with n = floor(D / 2r) (seed eq. 8.5). With albedo 0, F = exp(-2 tau) and
+// this is a shadow ray with step 2r over the averaged extinction.
+#ifndef avs_LightVolume_h
+#define avs_LightVolume_h
+
+#include "Grid.h"
+#include "Lights.h"
+#include "ScatteringTable.h"
+
+#include <cstdint>
+#include <functional>
+
+namespace avs
+{
+
+struct LightVolumeStatistics
+{
+  std::uint64_t Steps = 0; ///< balls marched, over all voxels
+};
+
+/// Tube transmittance of `light` on the grid `target` (same box as `averaged`). `slice` holds F
+/// for the current g and albedo; `radius` is the ambient radius r (> 0). Multi-threaded.
+Grid ComputeLightVolume(const Grid& averaged, const GridGeometry& target, const Light& light,
+  const ScatteringSlice& slice, double radius, LightVolumeStatistics* statistics = nullptr,
+  const std::function<void(double)>& progress = {});
+
+/// The tube transmittance at one world point (what ComputeLightVolume stores per voxel).
+double TubeTransmittance(const Grid& averaged, const Light& light, const ScatteringSlice& slice,
+  double radius, const Vec3& world, std::uint64_t* steps = nullptr);
+
+/// Dimensions of a light volume for data of dimensions `dims` capped at `maximum` per axis,
+/// keeping the aspect ratio.
+std::array<int, 3> LightVolumeDimensions(const std::array<int, 3>& dims, int maximum);
+
+} // namespace avs
+
+#endif

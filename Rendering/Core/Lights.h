@@ -1,0 +1,44 @@
+// Lights as VTK defines them (ALGORITHM.md section 1), in world space.
+//
+//   directional: propagation d = normalize(focal point - position), irradiance E = I * colour
+//   positional:  E = I * colour / (a0 + a1 dist + a2 dist^2)   (VTK's attenuation values)
+//   spot:        a positional light with cone half-angle < 90 degrees: zero outside the cone,
+//                times cos(angle to the axis)^exponent inside, as VTK's OpenGL shaders do
+#ifndef avs_Lights_h
+#define avs_Lights_h
+
+#include "Vec3.h"
+
+namespace avs
+{
+
+enum class LightType
+{
+  Directional,
+  Positional
+};
+
+struct Light
+{
+  LightType Type = LightType::Directional;
+  Vec3 Position{ 0, 0, 1 };
+  Vec3 FocalPoint{ 0, 0, 0 };
+  Vec3 Irradiance{ 1, 1, 1 };  ///< intensity times colour
+  Vec3 Attenuation{ 1, 0, 0 }; ///< a0, a1, a2 (positional lights)
+  double ConeAngle = 180.0;    ///< half-angle in degrees; >= 90 means no cone (point light)
+  double Exponent = 1.0;       ///< spot exponent
+
+  static Light Directional(const Vec3& propagation, const Vec3& irradiance);
+  static Light Point(const Vec3& position, const Vec3& irradiance, const Vec3& attenuation = { 1, 0, 0 });
+
+  bool IsSpot() const { return this->Type == LightType::Positional && this->ConeAngle < 90.0; }
+
+  /// Propagation direction of this light's light at x (unit).
+  Vec3 PropagationDirection(const Vec3& x) const;
+  /// Unoccluded irradiance at x: falloff and cone included, no volume attenuation.
+  Vec3 FreeIrradiance(const Vec3& x) const;
+};
+
+} // namespace avs
+
+#endif

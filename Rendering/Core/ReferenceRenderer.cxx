@@ -1,0 +1,225 @@
+#include "ReferenceRenderer.h"
+
+#include "AmbientOcclusion.h"
+#include "AveragedExtinction.h"
+#include "Extinction.h"
+#include "LightVolume.h"
+#include "Parallel.h"
+#include "PhaseFunction.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+namespace avs
+{
+
+Vec3 Image::Composited(int x, int y, const Vec3& background) const
+{
+  const float* p = this->At(x, y);
+  const double t = 1.0 - p[3];
+  return { p[0] + t * background.x, p[1] + t * background.y, p[2] + t * background.z };
+}
+
+Grid ExtinctionGrid(const VolumeScene& scene)
+{
+  Grid out(scene.Scalars.Geometry);
+  for (std::size_t i = 0; i < out.Values.size(); ++i)
+  {
+    out.Values[i] = static_cast<float>(
+      OpacityToExtinction(scene.Transfer.OpacityAt(scene.Scalars.Values[i]), scene.UnitDistance));
+  }
+  return out;
+}
+
+namespace
+{
+inline double SampleLocal(const Grid& g, const Vec3& local, double outside)
+{
+  const Vec3& s = g.Geometry.Spacing;
+  return g.SampleIndex({ local.x / s.x, local.y / s.y, local.z / s.z }, outside);
+}
+} // namespace
+
+bool Precompute(const VolumeScene& scene, const ScatteringParameters& p,
+  const ScatteringTable* table, RenderMode mode, PrecomputedVolumes& out, std::string* error,
+  const std::function<void(double)>& progress)
+{
+  if (scene.Scalars.Values.empty() ||
+    scene.Scalars.Values.size() != scene.Scalars.Geometry.NumberOfPoints())
+  {
+    if (error)
+    {
+      *error = "the volume has no scalars";
+    }
+    return false;
+  }
+  if (mode == RenderMode::AmbientScattering && !table)
+  {
+    if (error)
+    {
+      *error = "ambient scattering needs a scattering table";
+    }
+    return false;
+  }
+  auto report = [&](double v) {
+    if (progress)
+    {
+      progress(v);
+    }
+  };
+  out = PrecomputedVolumes();
+  out.Extinction = ExtinctionGrid(scene);
+  report(0.1);
+  const GridGeometry& geometry = scene.Scalars.Geometry;
+  if (mode == RenderMode::AmbientOcclusion)
+  {
+    out.Occlusion = ComputeAmbientOcclusion(out.Extinction, geometry, p.OcclusionRadius,
+      p.NumberOfDirections, 0.0, nullptr, [&](double v) { report(0.1 + 0.9 * v); });
+  }
+  else if (mode == RenderMode::AmbientScattering)
+  {
+    out.Slice = table->Slice(p.Anisotropy, p.Albedo);
+    out.Averaged = AverageExtinction(out.Extinction, p.AmbientRadius);
+    report(0.2);
+    const GridGeometry lightGeometry =
+      geometry.Resampled(LightVolumeDimensions(geometry.Dimensions, p.LightVolumeMaximumDimension));
+    const std::size_t n = scene.Lights.size();
+    for (std::size_t j = 0; j < n; ++j)
+    {
+      out.LightVolumes.push_back(ComputeLightVolume(out.Averaged, lightGeometry, scene.Lights[j],
+        out.Slice, p.AmbientRadius, nullptr,
+        [&](double v) { report(0.2 + 0.8 * (j + v) / n); }));
+    }
+  }
+  report(1.0);
+  return true;
+}
+
+namespace
+{
+
+// One ray, front to back. Returns premultiplied L and alpha.
+void CastRay(const VolumeScene& scene, const ScatteringParameters& p, const PrecomputedVolumes& v,
+  RenderMode mode, const Ray& ray, float* pixel)
+{
+  pixel[0] = pixel[1] = pixel[2] = pixel[3] = 0.0f;
+  const GridGeometry& geometry = scene.Scalars.Geometry;
+  const Vec3 o = geometry.WorldToLocal(ray.Origin);
+  const Vec3 d = geometry.WorldToLocalDirection(ray.Direction);
+  double t0, t1;
+  if (!IntersectBox(geometry.LocalExtent(), o, d, t0, t1) || t1 <= 0.0)
+  {
+    return;
+  }
+  t0 = std::max(t0, 0.0); // camera inside the volume
+  const int n = std::max(1, static_cast<int>(std::ceil((t1 - t0) / p.SampleDistance - 1e-9)));
+  const double dt = (t1 - t0) / n;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // sigma_t and colour at a local point: classification after interpolation, as on the GPU.
+  auto classify = [&](const Vec3& x, double& sigmaT, Vec3& color) {
+    const double s = SampleLocal(scene.Scalars, x, nan);
+    if (!(s == s))
+    {
+      sigmaT = 0.0;
+      color = { 0, 0, 0 };
+      return;
+    }
+    sigmaT = OpacityToExtinction(scene.Transfer.OpacityAt(s), scene.UnitDistance);
+    color = scene.Transfer.ColorAt(s);
+  };
+  Vec3 L{ 0, 0, 0 };
+  double T = 1.0;
+  for (int i = 0; i < n && T >= p.TerminationTransmittance; ++i)
+  {
+    const double t = t0 + (i + 0.5) * dt;
+    const Vec3 x = o + d * t;
+    double sigmaT;
+    Vec3 c;
+    classify(x, sigmaT, c);
+    const double extinction = std::exp(-sigmaT * dt);
+    if (mode == RenderMode::EmissionAbsorption)
+    {
+      L = L + c * (T * (1.0 - extinction));
+    }
+    else if (mode == RenderMode::AmbientOcclusion)
+    {
+      double weight = p.AmbientWeight * SampleLocal(v.Occlusion, x, 1.0) + p.EmissionWeight;
+      if (p.DirectLightWeight > 0.0 && sigmaT > 0.0)
+      {
+        const Vec3 world = geometry.LocalToWorld(x);
+        Vec3 direct{ 0, 0, 0 };
+        for (const Light& light : scene.Lights)
+        {
+          const double mu = Dot(light.PropagationDirection(world), -ray.Direction);
+          direct = direct + light.FreeIrradiance(world) * (4.0 * Pi * p.Albedo * HenyeyGreenstein(mu, p.Anisotropy));
+        }
+        L = L + Mul(c, direct) * (T * (1.0 - extinction) * p.DirectLightWeight);
+      }
+      L = L + c * (T * (1.0 - extinction) * weight);
+    }
+    else
+    {
+      // Emission (eq. 8.7).
+      L = L + c * (T * (1.0 - p.Albedo) * sigmaT * p.EmissionWeight * dt);
+      // Ambient in-scattering from the ball around x' = x(t + r) (eqs. 8.8-8.9).
+      const Vec3 xr = o + d * (t + p.AmbientRadius);
+      double sigmaR;
+      Vec3 cr;
+      classify(xr, sigmaR, cr);
+      if (sigmaR > 0.0)
+      {
+        const double tau = p.AmbientRadius * SampleLocal(v.Averaged, xr, 0.0);
+        const Vec3 world = geometry.LocalToWorld(xr);
+        Vec3 inscatter{ 0, 0, 0 };
+        for (std::size_t j = 0; j < scene.Lights.size(); ++j)
+        {
+          const Light& light = scene.Lights[j];
+          const double cosTheta = Dot(light.PropagationDirection(world), -ray.Direction);
+          const double transmittance = SampleLocal(v.LightVolumes[j], xr, 1.0);
+          inscatter = inscatter +
+            light.FreeIrradiance(world) * (transmittance * v.Slice.InScatteringCos(cosTheta, tau));
+        }
+        L = L + Mul(cr, inscatter) * (T * sigmaR * dt);
+      }
+    }
+    T *= extinction;
+  }
+  pixel[0] = static_cast<float>(L.x);
+  pixel[1] = static_cast<float>(L.y);
+  pixel[2] = static_cast<float>(L.z);
+  pixel[3] = static_cast<float>(1.0 - T);
+}
+
+} // namespace
+
+Image RenderReference(const VolumeScene& scene, const ScatteringParameters& p,
+  const PrecomputedVolumes& volumes, RenderMode mode, const Camera& camera, int width, int height,
+  const std::function<void(double)>& progress)
+{
+  Image image;
+  image.Width = std::max(0, width);
+  image.Height = std::max(0, height);
+  image.Pixels.assign(4 * static_cast<std::size_t>(image.Width) * image.Height, 0.0f);
+  std::atomic<int> rows{ 0 };
+  const std::thread::id caller = std::this_thread::get_id();
+  ParallelFor(image.Height, [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t y = b; y < e; ++y)
+    {
+      for (int x = 0; x < image.Width; ++x)
+      {
+        const Ray ray = camera.GenerateRay(x + 0.5, y + 0.5, image.Width, image.Height);
+        CastRay(scene, p, volumes, mode, ray, image.At(x, static_cast<int>(y)));
+      }
+      const int done = ++rows;
+      if (progress && std::this_thread::get_id() == caller)
+      {
+        progress(static_cast<double>(done) / image.Height);
+      }
+    }
+  });
+  return image;
+}
+
+} // namespace avs

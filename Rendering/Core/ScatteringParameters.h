@@ -1,0 +1,83 @@
+// The one parameter struct of the renderers: the CPU reference reads it, the VTK mappers fill it
+// from their properties and upload it as shader uniforms, so the two cannot drift apart.
+// Defaults here are the mappers' defaults; 0 for a length means "automatic" (see Resolve).
+#ifndef avs_ScatteringParameters_h
+#define avs_ScatteringParameters_h
+
+#include "Grid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace avs
+{
+
+enum class RenderMode
+{
+  EmissionAbsorption, ///< ALGORITHM.md section 2
+  AmbientOcclusion,   ///< section 7
+  AmbientScattering   ///< sections 3-6
+};
+
+struct ScatteringParameters
+{
+  // Medium (section 1).
+  double Albedo = 0.9;        ///< Lambda in [0, 1]
+  double Anisotropy = 0.0;    ///< Henyey–Greenstein g in [-0.95, 0.95]
+  double AmbientRadius = 0.0; ///< r in world units; 0: automatic
+  double EmissionWeight = 0.0; ///< k_e >= 0: emitted radiance k_e c
+
+  // Ambient occlusion (section 7).
+  double OcclusionRadius = 0.0; ///< R in world units; 0: the ambient radius
+  int NumberOfDirections = 32;  ///< K >= 14
+  double AmbientWeight = 1.0;   ///< k_amb
+  double DirectLightWeight = 0.0; ///< optional unshadowed direct light in the AO renderer
+
+  // Ray casting.
+  double SampleDistance = 0.0; ///< world units; 0: automatic (half the smallest spacing)
+  double TerminationTransmittance = 1.0 / 255.0; ///< stop a ray when T falls below
+  int LightVolumeMaximumDimension = 256; ///< light volumes use the data's size, capped by this
+
+  /// The automatic ambient radius of a grid: 1/64 of the box diagonal, but at least one voxel.
+  static double DefaultAmbientRadius(const GridGeometry& g)
+  {
+    const double minSpacing = std::min({ g.Spacing.x, g.Spacing.y, g.Spacing.z });
+    return std::max(g.Diagonal() / 64.0, minSpacing);
+  }
+  /// The automatic sample distance: half the smallest spacing.
+  static double DefaultSampleDistance(const GridGeometry& g)
+  {
+    return 0.5 * std::min({ g.Spacing.x, g.Spacing.y, g.Spacing.z });
+  }
+
+  /// A copy with automatic values filled in for grid g and values clamped into their ranges.
+  ScatteringParameters Resolve(const GridGeometry& g) const
+  {
+    ScatteringParameters p = *this;
+    p.Albedo = std::clamp(p.Albedo, 0.0, 1.0);
+    p.Anisotropy = std::clamp(p.Anisotropy, -0.95, 0.95);
+    if (!(p.AmbientRadius > 0.0) || !std::isfinite(p.AmbientRadius))
+    {
+      p.AmbientRadius = DefaultAmbientRadius(g);
+    }
+    p.EmissionWeight = std::max(0.0, p.EmissionWeight);
+    if (!(p.OcclusionRadius > 0.0) || !std::isfinite(p.OcclusionRadius))
+    {
+      p.OcclusionRadius = p.AmbientRadius;
+    }
+    p.NumberOfDirections = std::max(14, p.NumberOfDirections);
+    p.AmbientWeight = std::max(0.0, p.AmbientWeight);
+    p.DirectLightWeight = std::max(0.0, p.DirectLightWeight);
+    if (!(p.SampleDistance > 0.0) || !std::isfinite(p.SampleDistance))
+    {
+      p.SampleDistance = DefaultSampleDistance(g);
+    }
+    p.TerminationTransmittance = std::clamp(p.TerminationTransmittance, 0.0, 1.0);
+    p.LightVolumeMaximumDimension = std::max(2, p.LightVolumeMaximumDimension);
+    return p;
+  }
+};
+
+} // namespace avs
+
+#endif

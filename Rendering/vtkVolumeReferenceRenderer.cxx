@@ -1,0 +1,272 @@
+#include "vtkVolumeReferenceRenderer.h"
+
+#include "ReferenceRenderer.h"
+#include "vtkAVSSceneTranslator.h"
+#include "vtkAmbientScatteringTable.h"
+
+#include "vtkCamera.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkRenderer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkVolumeReferenceRenderer);
+vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, VolumeProperty, vtkVolumeProperty);
+vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, Renderer, vtkRenderer);
+vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, Camera, vtkCamera);
+vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, ScatteringTable, vtkAmbientScatteringTable);
+
+vtkVolumeReferenceRenderer::vtkVolumeReferenceRenderer()
+{
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(1);
+}
+
+vtkVolumeReferenceRenderer::~vtkVolumeReferenceRenderer()
+{
+  this->SetVolumeProperty(nullptr);
+  this->SetRenderer(nullptr);
+  this->SetCamera(nullptr);
+  this->SetScatteringTable(nullptr);
+}
+
+const char* vtkVolumeReferenceRenderer::GetRenderModeAsString()
+{
+  switch (this->RenderMode)
+  {
+    case EMISSION_ABSORPTION:
+      return "EmissionAbsorption";
+    case AMBIENT_OCCLUSION:
+      return "AmbientOcclusion";
+    default:
+      return "AmbientScattering";
+  }
+}
+
+vtkMTimeType vtkVolumeReferenceRenderer::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  if (this->VolumeProperty)
+  {
+    t = std::max(t, this->VolumeProperty->GetMTime());
+  }
+  if (this->Camera)
+  {
+    t = std::max(t, this->Camera->GetMTime());
+  }
+  if (this->ScatteringTable)
+  {
+    t = std::max(t, this->ScatteringTable->GetMTime());
+  }
+  if (this->Renderer)
+  {
+    t = std::max(t, this->Renderer->GetMTime());
+    if (vtkCamera* active = this->Renderer->GetActiveCamera())
+    {
+      t = std::max(t, active->GetMTime());
+    }
+    vtkLightCollection* lights = this->Renderer->GetLights();
+    vtkCollectionSimpleIterator it;
+    lights->InitTraversal(it);
+    while (vtkLight* l = lights->GetNextLight(it))
+    {
+      t = std::max(t, l->GetMTime());
+    }
+  }
+  return t;
+}
+
+int vtkVolumeReferenceRenderer::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  return 1;
+}
+
+int vtkVolumeReferenceRenderer::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const int w = std::max(1, this->ImageSize[0]);
+  const int h = std::max(1, this->ImageSize[1]);
+  int extent[6] = { 0, w - 1, 0, h - 1, 0, 0 };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  double spacing[3] = { 1, 1, 1 }, origin[3] = { 0, 0, 0 };
+  outInfo->Set(vtkDataObject::SPACING(), spacing, 3);
+  outInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
+  vtkDataObject::SetPointDataActiveScalarInfo(outInfo, VTK_UNSIGNED_CHAR, 3);
+  return 1;
+}
+
+int vtkVolumeReferenceRenderer::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // The whole volume is needed whatever part of the picture is asked for.
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  if (inInfo)
+  {
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+      inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+  }
+  return 1;
+}
+
+int vtkVolumeReferenceRenderer::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkImageData* input = vtkImageData::GetData(inputVector[0]);
+  vtkImageData* output = vtkImageData::GetData(outputVector);
+  output->Initialize();
+
+  avs::VolumeScene scene;
+  std::string error;
+  if (!vtkAVSSceneTranslator::ToGrid(input, scene.Scalars, error))
+  {
+    vtkErrorMacro("Cannot render: " << error);
+    return 1;
+  }
+  if (!this->VolumeProperty)
+  {
+    vtkErrorMacro("Cannot render: no volume property set.");
+    return 1;
+  }
+  double range[2];
+  input->GetPointData()->GetScalars()->GetRange(range, 0);
+  if (!vtkAVSSceneTranslator::ToTransferFunction(
+        this->VolumeProperty, range[0], range[1], scene.Transfer, scene.UnitDistance, error))
+  {
+    vtkErrorMacro("Cannot render: " << error);
+    return 1;
+  }
+  vtkCamera* camera = this->Camera
+    ? this->Camera
+    : (this->Renderer ? this->Renderer->GetActiveCamera() : nullptr);
+  if (!camera)
+  {
+    vtkErrorMacro("Cannot render: no camera (set Camera or Renderer).");
+    return 1;
+  }
+  scene.Lights = vtkAVSSceneTranslator::ToLights(this->Renderer, camera);
+  scene.Background = { this->Background[0], this->Background[1], this->Background[2] };
+
+  const avs::RenderMode mode = this->RenderMode == EMISSION_ABSORPTION
+    ? avs::RenderMode::EmissionAbsorption
+    : (this->RenderMode == AMBIENT_OCCLUSION ? avs::RenderMode::AmbientOcclusion
+                                              : avs::RenderMode::AmbientScattering);
+  const avs::ScatteringTable* table = nullptr;
+  if (mode == avs::RenderMode::AmbientScattering)
+  {
+    if (!this->ScatteringTable)
+    {
+      vtkNew<vtkAmbientScatteringTable> defaultTable;
+      this->SetScatteringTable(defaultTable);
+    }
+    if (!this->ScatteringTable->Update())
+    {
+      vtkErrorMacro("Cannot render ambient scattering without a scattering table.");
+      return 1;
+    }
+    table = this->ScatteringTable->GetTable();
+  }
+
+  avs::ScatteringParameters parameters;
+  parameters.Albedo = this->Albedo;
+  parameters.Anisotropy = this->Anisotropy;
+  parameters.AmbientRadius = this->AmbientRadius;
+  parameters.EmissionWeight = this->EmissionWeight;
+  parameters.OcclusionRadius = this->OcclusionRadius;
+  parameters.NumberOfDirections = this->NumberOfDirections;
+  parameters.AmbientWeight = this->AmbientWeight;
+  parameters.DirectLightWeight = this->DirectLightWeight;
+  parameters.SampleDistance = this->SampleDistance;
+  parameters.TerminationTransmittance = this->TerminationTransmittance;
+  parameters.LightVolumeMaximumDimension = this->LightVolumeMaximumDimension;
+  const avs::ScatteringParameters resolved = parameters.Resolve(scene.Scalars.Geometry);
+
+  this->UpdateProgress(0.0);
+  avs::PrecomputedVolumes volumes;
+  if (!avs::Precompute(scene, resolved, table, mode, volumes, &error,
+        [this](double v) { this->UpdateProgress(0.5 * v); }))
+  {
+    vtkErrorMacro("Cannot render: " << error);
+    return 1;
+  }
+  const int w = std::max(1, this->ImageSize[0]);
+  const int h = std::max(1, this->ImageSize[1]);
+  const avs::Image image = avs::RenderReference(scene, resolved, volumes, mode,
+    vtkAVSSceneTranslator::ToCamera(camera), w, h,
+    [this](double v) { this->UpdateProgress(0.5 + 0.5 * v); });
+
+  output->SetExtent(0, w - 1, 0, h - 1, 0, 0);
+  output->SetSpacing(1, 1, 1);
+  output->SetOrigin(0, 0, 0);
+  vtkNew<vtkUnsignedCharArray> rgb;
+  rgb->SetName("RGB");
+  rgb->SetNumberOfComponents(3);
+  rgb->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  vtkNew<vtkFloatArray> radiance;
+  radiance->SetName("Radiance");
+  radiance->SetNumberOfComponents(4);
+  radiance->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      const vtkIdType id = static_cast<vtkIdType>(y) * w + x;
+      const avs::Vec3 c = image.Composited(x, y, scene.Background);
+      for (int k = 0; k < 3; ++k)
+      {
+        const double v = std::clamp(c[k], 0.0, 1.0);
+        rgb->SetTypedComponent(id, k, static_cast<unsigned char>(std::lround(255.0 * v)));
+      }
+      const float* p = image.At(x, y);
+      for (int k = 0; k < 4; ++k)
+      {
+        radiance->SetTypedComponent(id, k, p[k]);
+      }
+    }
+  }
+  output->GetPointData()->SetScalars(rgb);
+  output->GetPointData()->AddArray(radiance);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkVolumeReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "RenderMode: " << this->GetRenderModeAsString() << "\n";
+  os << indent << "VolumeProperty: " << this->VolumeProperty << "\n";
+  os << indent << "Renderer: " << this->Renderer << "\n";
+  os << indent << "Camera: " << this->Camera << "\n";
+  os << indent << "ScatteringTable: " << this->ScatteringTable << "\n";
+  os << indent << "ImageSize: " << this->ImageSize[0] << " x " << this->ImageSize[1] << "\n";
+  os << indent << "Background: (" << this->Background[0] << ", " << this->Background[1] << ", "
+     << this->Background[2] << ")\n";
+  os << indent << "Albedo: " << this->Albedo << "\n";
+  os << indent << "Anisotropy: " << this->Anisotropy << "\n";
+  os << indent << "AmbientRadius: " << this->AmbientRadius
+     << (this->AmbientRadius > 0 ? "" : " (automatic)") << "\n";
+  os << indent << "EmissionWeight: " << this->EmissionWeight << "\n";
+  os << indent << "OcclusionRadius: " << this->OcclusionRadius
+     << (this->OcclusionRadius > 0 ? "" : " (the ambient radius)") << "\n";
+  os << indent << "NumberOfDirections: " << this->NumberOfDirections << "\n";
+  os << indent << "AmbientWeight: " << this->AmbientWeight << "\n";
+  os << indent << "DirectLightWeight: " << this->DirectLightWeight << "\n";
+  os << indent << "SampleDistance: " << this->SampleDistance
+     << (this->SampleDistance > 0 ? "" : " (automatic)") << "\n";
+  os << indent << "TerminationTransmittance: " << this->TerminationTransmittance << "\n";
+  os << indent << "LightVolumeMaximumDimension: " << this->LightVolumeMaximumDimension << "\n";
+}

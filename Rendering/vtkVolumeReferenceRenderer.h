@@ -1,0 +1,236 @@
+/**
+ * @class   vtkVolumeReferenceRenderer
+ * @brief   renders image data with the CPU reference ray caster into an image
+ *
+ * An image algorithm: its input is the volume (vtkImageData with single-component point
+ * scalars, any type), its output a picture of it as a renderer's camera and lights see it. It
+ * runs the project's double-precision reference ray caster (ALGORITHM.md sections 2-7):
+ * emission–absorption, volumetric ambient occlusion or ambient volume scattering. The GPU
+ * mappers are measured against it; it is also the renderer of `./avs demo` where no GPU mapper
+ * is wanted.
+ *
+ * The output has ImageSize pixels, 3-component unsigned char scalars "RGB" (the volume
+ * composited over Background) and a 4-component float array "Radiance" (premultiplied radiance
+ * and alpha = 1 - transmittance).
+ *
+ * Bad input (no or empty image, no scalars, more than one component, NaN or infinite values,
+ * bad spacing, no volume property, a missing or corrupt scattering table) gives a vtkErrorMacro
+ * and an empty output. Progress events are fired during the precomputation and the rendering.
+ */
+#ifndef vtkVolumeReferenceRenderer_h
+#define vtkVolumeReferenceRenderer_h
+
+#include "vtkImageAlgorithm.h"
+#include "vtkRenderingAmbientScatteringModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkAmbientScatteringTable;
+class vtkCamera;
+class vtkRenderer;
+class vtkVolumeProperty;
+
+class VTKRENDERINGAMBIENTSCATTERING_EXPORT vtkVolumeReferenceRenderer : public vtkImageAlgorithm
+{
+public:
+  static vtkVolumeReferenceRenderer* New();
+  vtkTypeMacro(vtkVolumeReferenceRenderer, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum RenderModes
+  {
+    EMISSION_ABSORPTION = 0,
+    AMBIENT_OCCLUSION = 1,
+    AMBIENT_SCATTERING = 2
+  };
+
+  ///@{
+  /**
+   * What to render. Default: AMBIENT_SCATTERING.
+   */
+  vtkSetClampMacro(RenderMode, int, EMISSION_ABSORPTION, AMBIENT_SCATTERING);
+  vtkGetMacro(RenderMode, int);
+  void SetRenderModeToEmissionAbsorption() { this->SetRenderMode(EMISSION_ABSORPTION); }
+  void SetRenderModeToAmbientOcclusion() { this->SetRenderMode(AMBIENT_OCCLUSION); }
+  void SetRenderModeToAmbientScattering() { this->SetRenderMode(AMBIENT_SCATTERING); }
+  const char* GetRenderModeAsString();
+  ///@}
+
+  ///@{
+  /**
+   * The volume's property: colour and scalar-opacity functions of component 0 and the scalar
+   * opacity unit distance. Required.
+   */
+  void SetVolumeProperty(vtkVolumeProperty* property);
+  vtkGetObjectMacro(VolumeProperty, vtkVolumeProperty);
+  ///@}
+
+  ///@{
+  /**
+   * The renderer whose lights light the volume and whose active camera looks at it, unless
+   * Camera is set. Without a renderer the camera's headlight is used.
+   */
+  void SetRenderer(vtkRenderer* renderer);
+  vtkGetObjectMacro(Renderer, vtkRenderer);
+  ///@}
+
+  ///@{
+  /**
+   * The camera; default: the renderer's active camera.
+   */
+  void SetCamera(vtkCamera* camera);
+  vtkGetObjectMacro(Camera, vtkCamera);
+  ///@}
+
+  ///@{
+  /**
+   * The scattering table; default: the shipped table, loaded on first use.
+   */
+  void SetScatteringTable(vtkAmbientScatteringTable* table);
+  vtkGetObjectMacro(ScatteringTable, vtkAmbientScatteringTable);
+  ///@}
+
+  ///@{
+  /**
+   * Output size in pixels. Default: 256 x 256.
+   */
+  vtkSetVector2Macro(ImageSize, int);
+  vtkGetVector2Macro(ImageSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * Colour behind the volume in the "RGB" output. Default: black.
+   */
+  vtkSetVector3Macro(Background, double);
+  vtkGetVector3Macro(Background, double);
+  ///@}
+
+  ///@{
+  /**
+   * Scattering albedo Lambda in [0, 1]. Default 0.9.
+   */
+  vtkSetClampMacro(Albedo, double, 0.0, 1.0);
+  vtkGetMacro(Albedo, double);
+  ///@}
+
+  ///@{
+  /**
+   * Henyey–Greenstein anisotropy g in [-0.95, 0.95]. Default 0.
+   */
+  vtkSetClampMacro(Anisotropy, double, -0.95, 0.95);
+  vtkGetMacro(Anisotropy, double);
+  ///@}
+
+  ///@{
+  /**
+   * Ambient radius r in world units. Default 0: automatic, 1/64 of the volume's diagonal but at
+   * least the smallest voxel spacing.
+   */
+  vtkSetClampMacro(AmbientRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(AmbientRadius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Emission weight k_e >= 0 (emitted radiance k_e times the colour). Default 0.
+   */
+  vtkSetClampMacro(EmissionWeight, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(EmissionWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Ambient-occlusion radius R in world units. Default 0: the ambient radius.
+   */
+  vtkSetClampMacro(OcclusionRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(OcclusionRadius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Ambient-occlusion directions K, at least 14. Default 32.
+   */
+  vtkSetClampMacro(NumberOfDirections, int, 14, 1024);
+  vtkGetMacro(NumberOfDirections, int);
+  ///@}
+
+  ///@{
+  /**
+   * Ambient-occlusion weight k_amb >= 0. Default 1.
+   */
+  vtkSetClampMacro(AmbientWeight, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(AmbientWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Weight of the unshadowed direct light added by the AO renderer. Default 0.
+   */
+  vtkSetClampMacro(DirectLightWeight, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(DirectLightWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Ray-marching step in world units. Default 0: half the smallest voxel spacing.
+   */
+  vtkSetClampMacro(SampleDistance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(SampleDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Early ray termination: rays stop when their transmittance falls below this. Default 1/255.
+   */
+  vtkSetClampMacro(TerminationTransmittance, double, 0.0, 1.0);
+  vtkGetMacro(TerminationTransmittance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Largest light-volume dimension per axis (the data's dimensions, capped). Default 256.
+   */
+  vtkSetClampMacro(LightVolumeMaximumDimension, int, 2, 4096);
+  vtkGetMacro(LightVolumeMaximumDimension, int);
+  ///@}
+
+  /**
+   * Includes the property's, the camera's, the renderer's and the lights' modification times.
+   */
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkVolumeReferenceRenderer();
+  ~vtkVolumeReferenceRenderer() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int RenderMode = AMBIENT_SCATTERING;
+  vtkVolumeProperty* VolumeProperty = nullptr;
+  vtkRenderer* Renderer = nullptr;
+  vtkCamera* Camera = nullptr;
+  vtkAmbientScatteringTable* ScatteringTable = nullptr;
+  int ImageSize[2] = { 256, 256 };
+  double Background[3] = { 0.0, 0.0, 0.0 };
+  double Albedo = 0.9;
+  double Anisotropy = 0.0;
+  double AmbientRadius = 0.0;
+  double EmissionWeight = 0.0;
+  double OcclusionRadius = 0.0;
+  int NumberOfDirections = 32;
+  double AmbientWeight = 1.0;
+  double DirectLightWeight = 0.0;
+  double SampleDistance = 0.0;
+  double TerminationTransmittance = 1.0 / 255.0;
+  int LightVolumeMaximumDimension = 256;
+
+private:
+  vtkVolumeReferenceRenderer(const vtkVolumeReferenceRenderer&) = delete;
+  void operator=(const vtkVolumeReferenceRenderer&) = delete;
+};
+
+#endif

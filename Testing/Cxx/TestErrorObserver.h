@@ -1,0 +1,46 @@
+// Records vtkErrorMacro / vtkWarningMacro output of an object so tests can assert on it.
+#ifndef TestErrorObserver_h
+#define TestErrorObserver_h
+
+#include "vtkCommand.h"
+
+#include <string>
+
+class TestErrorObserver : public vtkCommand
+{
+public:
+  static TestErrorObserver* New() { return new TestErrorObserver; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    const std::string text = data ? static_cast<const char*>(data) : "";
+    if (event == vtkCommand::ErrorEvent)
+    {
+      ++this->Errors;
+      this->LastError = text;
+    }
+    else if (event == vtkCommand::WarningEvent)
+    {
+      ++this->Warnings;
+    }
+  }
+  void Clear()
+  {
+    this->Errors = this->Warnings = 0;
+    this->LastError.clear();
+  }
+  int Errors = 0;
+  int Warnings = 0;
+  std::string LastError;
+};
+
+#define AVS_CHECK(condition)                                                                       \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(condition))                                                                              \
+    {                                                                                              \
+      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #condition << std::endl;     \
+      ++failures;                                                                                  \
+    }                                                                                              \
+  } while (0)
+
+#endif

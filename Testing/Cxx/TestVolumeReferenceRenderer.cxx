@@ -1,0 +1,189 @@
+// vtkVolumeReferenceRenderer: renders EA, AO and ambient scattering of a structured volume,
+// honours the renderer's lights, and rejects bad input with an error and an empty output.
+#include "TestErrorObserver.h"
+#include "vtkVolumeReferenceRenderer.h"
+
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkRenderer.h"
+#include "vtkShortArray.h"
+#include "vtkVolumeProperty.h"
+
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace
+{
+// A ball of density 1 inside a 24^3 image with short scalars (not float: any type works).
+vtkSmartPointer<vtkImageData> Ball()
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(24, 24, 24);
+  image->SetSpacing(0.5, 0.5, 0.5);
+  image->SetOrigin(-5.75, -5.75, -5.75);
+  vtkNew<vtkShortArray> s;
+  s->SetNumberOfTuples(24 * 24 * 24);
+  for (int k = 0; k < 24; ++k)
+    for (int j = 0; j < 24; ++j)
+      for (int i = 0; i < 24; ++i)
+      {
+        const double r = std::sqrt((i - 11.5) * (i - 11.5) + (j - 11.5) * (j - 11.5) + (k - 11.5) * (k - 11.5));
+        s->SetValue((k * 24 + j) * 24 + i, static_cast<short>(r < 8 ? 100 : 0));
+      }
+  image->GetPointData()->SetScalars(s);
+  return image;
+}
+
+double PixelSum(vtkImageData* image)
+{
+  vtkDataArray* rgb = image->GetPointData()->GetScalars();
+  double sum = 0.0;
+  for (vtkIdType i = 0; i < rgb->GetNumberOfTuples(); ++i)
+  {
+    sum += rgb->GetComponent(i, 0) + rgb->GetComponent(i, 1) + rgb->GetComponent(i, 2);
+  }
+  return sum;
+}
+} // namespace
+
+int main(int, char*[])
+{
+  int failures = 0;
+  vtkNew<vtkVolumeProperty> property;
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0, 1, 1, 1);
+  color->AddRGBPoint(100, 1, 0.8, 0.6);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0, 0);
+  opacity->AddPoint(100, 0.3);
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  property->SetScalarOpacityUnitDistance(1.0);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->GetActiveCamera()->SetPosition(0, 0, 40);
+  renderer->GetActiveCamera()->SetFocalPoint(0, 0, 0);
+  vtkNew<vtkLight> light;
+  light->SetPositional(false);
+  light->SetPosition(-1, 1, 1);
+  light->SetFocalPoint(0, 0, 0);
+  light->SetIntensity(8.0);
+  renderer->AddLight(light);
+
+  vtkNew<vtkVolumeReferenceRenderer> filter;
+  vtkNew<TestErrorObserver> errors;
+  filter->AddObserver(vtkCommand::ErrorEvent, errors);
+  filter->SetVolumeProperty(property);
+  filter->SetRenderer(renderer);
+  filter->SetImageSize(32, 24);
+  filter->SetInputData(Ball());
+
+  double sums[3];
+  for (int mode = 0; mode < 3; ++mode)
+  {
+    filter->SetRenderMode(mode);
+    filter->Update();
+    vtkImageData* out = filter->GetOutput();
+    AVS_CHECK(errors->Errors == 0);
+    int dims[3];
+    out->GetDimensions(dims);
+    AVS_CHECK(dims[0] == 32 && dims[1] == 24);
+    AVS_CHECK(out->GetPointData()->GetArray("Radiance") != nullptr);
+    sums[mode] = PixelSum(out);
+    AVS_CHECK(sums[mode] > 0.0);
+    // Background corners stay black; the centre shows the ball.
+    AVS_CHECK(out->GetScalarComponentAsDouble(0, 0, 0, 0) == 0.0);
+    AVS_CHECK(out->GetScalarComponentAsDouble(16, 12, 0, 0) > 0.0);
+  }
+  // The light matters for ambient scattering: switching it off (a headlight is used instead
+  // only when the renderer has no lights at all) darkens the picture.
+  filter->SetRenderModeToAmbientScattering();
+  light->SwitchOff();
+  filter->Update();
+  AVS_CHECK(PixelSum(filter->GetOutput()) < 0.01 * sums[2]);
+  light->SwitchOn();
+
+  // Bad input: each gives an error and an empty output, and no crash.
+  auto expectError = [&](vtkImageData* input, const std::string& text) {
+    errors->Clear();
+    filter->SetInputData(input);
+    filter->Update();
+    if (errors->Errors == 0 || errors->LastError.find(text) == std::string::npos ||
+      filter->GetOutput()->GetNumberOfPoints() != 0)
+    {
+      std::cerr << "expected an error containing '" << text << "', got '" << errors->LastError
+                << "'\n";
+      ++failures;
+    }
+  };
+  vtkNew<vtkImageData> empty;
+  expectError(empty, "empty");
+  {
+    auto noScalars = Ball();
+    noScalars->GetPointData()->RemoveArray(0);
+    expectError(noScalars, "no point scalars");
+  }
+  {
+    auto vectors = Ball();
+    vtkNew<vtkFloatArray> v;
+    v->SetNumberOfComponents(3);
+    v->SetNumberOfTuples(vectors->GetNumberOfPoints());
+    v->Fill(1.0);
+    vectors->GetPointData()->SetScalars(v);
+    expectError(vectors, "components");
+  }
+  {
+    auto nan = Ball();
+    vtkNew<vtkDoubleArray> d;
+    d->SetNumberOfTuples(nan->GetNumberOfPoints());
+    d->Fill(1.0);
+    d->SetValue(77, std::numeric_limits<double>::quiet_NaN());
+    nan->GetPointData()->SetScalars(d);
+    expectError(nan, "NaN");
+    d->SetValue(77, std::numeric_limits<double>::infinity());
+    d->Modified();
+    expectError(nan, "NaN or infinite");
+  }
+  {
+    auto flat = Ball();
+    flat->SetSpacing(0.5, 0.0, 0.5);
+    expectError(flat, "spacing");
+    flat->SetSpacing(0.5, std::numeric_limits<double>::infinity(), 0.5);
+    expectError(flat, "spacing");
+  }
+  {
+    vtkNew<vtkImageData> plane;
+    plane->SetDimensions(10, 10, 1);
+    plane->AllocateScalars(VTK_FLOAT, 1);
+    expectError(plane, "not a volume");
+  }
+  filter->SetInputData(Ball());
+  filter->SetVolumeProperty(nullptr);
+  errors->Clear();
+  filter->Update();
+  AVS_CHECK(errors->Errors == 1 && errors->LastError.find("volume property") != std::string::npos);
+
+  std::ostringstream os;
+  filter->Print(os);
+  for (const char* key : { "RenderMode", "Albedo", "Anisotropy", "AmbientRadius", "EmissionWeight",
+         "OcclusionRadius", "NumberOfDirections", "AmbientWeight", "SampleDistance",
+         "TerminationTransmittance", "LightVolumeMaximumDimension", "ImageSize", "Background" })
+  {
+    AVS_CHECK(os.str().find(key) != std::string::npos);
+  }
+  if (failures)
+  {
+    std::cerr << failures << " check(s) failed\n";
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}

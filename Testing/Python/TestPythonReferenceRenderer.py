@@ -1,0 +1,102 @@
+"""A VTK pipeline in Python: a structured volume rendered by vtkVolumeReferenceRenderer with
+the renderer's lights and camera, checked pixel by pixel; bad input gives an error, not a crash."""
+import sys
+
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
+from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
+from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkLight, vtkRenderer,
+                                         vtkVolumeProperty)
+
+import ambientscattering
+
+
+def main():
+    failures = []
+
+    def check(condition, what):
+        if not condition:
+            failures.append(what)
+
+    source = vtkRTAnalyticSource()  # a structured float field on a 21^3 grid
+    source.SetWholeExtent(-10, 10, -10, 10, -10, 10)
+    source.Update()
+    lo, hi = source.GetOutput().GetScalarRange()
+
+    prop = vtkVolumeProperty()
+    color = vtkColorTransferFunction()
+    color.AddRGBPoint(lo, 0.2, 0.3, 1.0)
+    color.AddRGBPoint(hi, 1.0, 0.7, 0.3)
+    opacity = vtkPiecewiseFunction()
+    opacity.AddPoint(lo, 0.0)
+    opacity.AddPoint(hi, 0.4)
+    prop.SetColor(color)
+    prop.SetScalarOpacity(opacity)
+    prop.SetScalarOpacityUnitDistance(2.0)
+
+    renderer = vtkRenderer()
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(0, 0, 60)
+    camera.SetFocalPoint(0, 0, 0)
+    sun = vtkLight()
+    sun.SetPositional(False)
+    sun.SetPosition(1, 1, 1)
+    sun.SetFocalPoint(0, 0, 0)
+    sun.SetIntensity(10.0)
+    renderer.AddLight(sun)
+
+    filt = ambientscattering.vtkVolumeReferenceRenderer()
+    filt.SetInputConnection(source.GetOutputPort())
+    filt.SetVolumeProperty(prop)
+    filt.SetRenderer(renderer)
+    filt.SetImageSize(40, 40)
+    progress = []
+    filt.AddObserver("ProgressEvent", lambda obj, event: progress.append(obj.GetProgress()))
+
+    totals = {}
+    for mode in ("EmissionAbsorption", "AmbientOcclusion", "AmbientScattering"):
+        getattr(filt, "SetRenderModeTo" + mode)()
+        filt.Update()
+        out = filt.GetOutput()
+        check(out.GetDimensions() == (40, 40, 1), mode + ": wrong size")
+        rgb = out.GetPointData().GetScalars()
+        total = sum(rgb.GetComponent(i, c) for i in range(rgb.GetNumberOfTuples()) for c in range(3))
+        totals[mode] = total
+        check(total > 0, mode + ": blank picture")
+        # The volume fills the centre; the corners are background.
+        check(out.GetScalarComponentAsDouble(0, 0, 0, 0) == 0, mode + ": corner not background")
+        centre = sum(out.GetScalarComponentAsDouble(20, 20, 0, c) for c in range(3))
+        check(centre > 0, mode + ": centre empty")
+        radiance = out.GetPointData().GetArray("Radiance")
+        check(radiance is not None and radiance.GetNumberOfComponents() == 4, mode + ": no radiance")
+        check(0.0 < radiance.GetComponent(20 * 40 + 20, 3) <= 1.0, mode + ": bad alpha")
+    check(progress and max(progress) == 1.0, "no progress events")
+
+    # More albedo, more scattered light.
+    filt.SetRenderModeToAmbientScattering()
+    filt.SetAlbedo(0.2)
+    filt.Update()
+    rgb = filt.GetOutput().GetPointData().GetScalars()
+    dim = sum(rgb.GetComponent(i, 0) for i in range(rgb.GetNumberOfTuples()))
+    filt.SetAlbedo(1.0)
+    filt.Update()
+    rgb = filt.GetOutput().GetPointData().GetScalars()
+    bright = sum(rgb.GetComponent(i, 0) for i in range(rgb.GetNumberOfTuples()))
+    check(bright > dim, "albedo does not brighten the scattering")
+
+    # Bad input: an empty image.
+    errors = []
+    filt.AddObserver("ErrorEvent", lambda obj, event: errors.append(event))
+    filt.SetInputData(vtkImageData())
+    filt.Update()
+    check(len(errors) == 1, "no error for an empty image")
+    check(filt.GetOutput().GetNumberOfPoints() == 0, "output not empty after an error")
+
+    if failures:
+        print("FAILED:", *failures, sep="\n  ")
+        return 1
+    print("ok", totals)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
