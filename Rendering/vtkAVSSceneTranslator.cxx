@@ -8,10 +8,10 @@
 #include "vtkLightCollection.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkRenderer.h"
-#include "vtkNew.h"
 #include "vtkSmartPointer.h"
 #include "vtkVolumeProperty.h"
 
@@ -22,7 +22,7 @@ namespace
 {
 constexpr int TableSize = 1024;
 
-template <typename T>
+template<typename T>
 void CopyValues(const T* in, vtkIdType n, int components, float* out)
 {
   for (vtkIdType i = 0; i < n; ++i)
@@ -100,9 +100,18 @@ bool vtkAVSSceneTranslator::ToGrid(vtkImageData* image, avs::Grid& grid, std::st
   avs::GridGeometry g;
   g.Dimensions = { dims[0], dims[1], dims[2] };
   g.Spacing = { spacing[0], spacing[1], spacing[2] };
-  g.Origin = { origin[0], origin[1], origin[2] };
-  // VTK 9.1 image data has a direction matrix; world = origin + D (index * spacing).
+  // VTK 9.1 image data has a direction matrix: world = origin + D (ijk * spacing), where ijk
+  // runs over the extent. The core's grid starts at index 0, so its origin is the world
+  // position of the extent's first point.
   const double* d = image->GetDirectionMatrix()->GetData();
+  int extent[6];
+  image->GetExtent(extent);
+  const double first[3] = {
+    extent[0] * spacing[0], extent[2] * spacing[1], extent[4] * spacing[2]
+  };
+  g.Origin = { origin[0] + d[0] * first[0] + d[1] * first[1] + d[2] * first[2],
+    origin[1] + d[3] * first[0] + d[4] * first[1] + d[5] * first[2],
+    origin[2] + d[6] * first[0] + d[7] * first[1] + d[8] * first[2] };
   for (int i = 0; i < 9; ++i)
   {
     g.Direction[i] = d[i];
@@ -127,8 +136,10 @@ bool vtkAVSSceneTranslator::ToGrid(vtkImageData* image, avs::Grid& grid, std::st
   const vtkIdType n = image->GetNumberOfPoints();
   switch (scalars->GetDataType())
   {
-    vtkTemplateMacro(CopyValues(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), n,
-      scalars->GetNumberOfComponents(), grid.Values.data()));
+    vtkTemplateMacro(CopyValues(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)),
+      n,
+      scalars->GetNumberOfComponents(),
+      grid.Values.data()));
     default:
       for (vtkIdType i = 0; i < n; ++i)
       {
@@ -149,8 +160,12 @@ bool vtkAVSSceneTranslator::ToGrid(vtkImageData* image, avs::Grid& grid, std::st
   return true;
 }
 
-bool vtkAVSSceneTranslator::ToTransferFunction(vtkVolumeProperty* property, double lo, double hi,
-  avs::TransferFunction& tf, double& unitDistance, std::string& error)
+bool vtkAVSSceneTranslator::ToTransferFunction(vtkVolumeProperty* property,
+  double lo,
+  double hi,
+  avs::TransferFunction& tf,
+  double& unitDistance,
+  std::string& error)
 {
   if (!property)
   {
@@ -204,7 +219,8 @@ std::vector<avs::Light> vtkAVSSceneTranslator::ToLights(vtkRenderer* renderer, v
 {
   std::vector<avs::Light> lights;
   auto toVec = [](const double* v) { return avs::Vec3{ v[0], v[1], v[2] }; };
-  auto add = [&](vtkLight* l) {
+  auto add = [&](vtkLight* l)
+  {
     if (!l->GetSwitch())
     {
       return;
@@ -240,7 +256,8 @@ std::vector<avs::Light> vtkAVSSceneTranslator::ToLights(vtkRenderer* renderer, v
     out.Attenuation = toVec(l->GetAttenuationValues());
     out.ConeAngle = l->GetConeAngle();
     out.Exponent = l->GetExponent();
-    if (out.Type == avs::LightType::Directional && avs::Length(out.FocalPoint - out.Position) == 0.0)
+    if (out.Type == avs::LightType::Directional &&
+      avs::Length(out.FocalPoint - out.Position) == 0.0)
     {
       return; // no direction: VTK draws nothing from it either
     }

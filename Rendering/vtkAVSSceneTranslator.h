@@ -36,8 +36,12 @@ public:
   static bool ToGrid(vtkImageData* image, avs::Grid& grid, std::string& error);
 
   /// Samples the colour and scalar-opacity functions of component 0 over [lo, hi].
-  static bool ToTransferFunction(vtkVolumeProperty* property, double lo, double hi,
-    avs::TransferFunction& tf, double& unitDistance, std::string& error);
+  static bool ToTransferFunction(vtkVolumeProperty* property,
+    double lo,
+    double hi,
+    avs::TransferFunction& tf,
+    double& unitDistance,
+    std::string& error);
 
   /// The switched-on lights of `renderer` in world space (headlights follow the camera, camera
   /// lights are transformed by it). A renderer without lights gets a headlight, as VTK does.

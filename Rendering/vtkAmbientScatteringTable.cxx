@@ -18,7 +18,8 @@ vtkAmbientScatteringTable::~vtkAmbientScatteringTable()
 
 std::string vtkAmbientScatteringTable::GetDefaultFileName()
 {
-  auto exists = [](const std::string& path) {
+  auto exists = [](const std::string& path)
+  {
     std::ifstream f(path, std::ios::binary);
     return static_cast<bool>(f);
   };
@@ -88,8 +89,10 @@ const avs::ScatteringTable* vtkAmbientScatteringTable::GetTable() const
   return this->Table.get();
 }
 
-double vtkAmbientScatteringTable::GetInScattering(
-  double theta, double tau, double g, double albedo) const
+double vtkAmbientScatteringTable::GetInScattering(double theta,
+  double tau,
+  double g,
+  double albedo) const
 {
   return this->Table ? this->Table->InScattering(theta, tau, g, albedo) : 0.0;
 }

@@ -95,8 +95,9 @@ int vtkVolumeReferenceRenderer::FillInputPortInformation(int, vtkInformation* in
   return 1;
 }
 
-int vtkVolumeReferenceRenderer::RequestInformation(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+int vtkVolumeReferenceRenderer::RequestInformation(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outputVector)
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   const int w = std::max(1, this->ImageSize[0]);
@@ -110,21 +111,24 @@ int vtkVolumeReferenceRenderer::RequestInformation(
   return 1;
 }
 
-int vtkVolumeReferenceRenderer::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+int vtkVolumeReferenceRenderer::RequestUpdateExtent(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector*)
 {
   // The whole volume is needed whatever part of the picture is asked for.
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
   if (inInfo)
   {
     inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
-      inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+      inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()),
+      6);
   }
   return 1;
 }
 
-int vtkVolumeReferenceRenderer::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
 {
   vtkImageData* input = vtkImageData::GetData(inputVector[0]);
   vtkImageData* output = vtkImageData::GetData(outputVector);
@@ -150,9 +154,8 @@ int vtkVolumeReferenceRenderer::RequestData(
     vtkErrorMacro("Cannot render: " << error);
     return 1;
   }
-  vtkCamera* camera = this->Camera
-    ? this->Camera
-    : (this->Renderer ? this->Renderer->GetActiveCamera() : nullptr);
+  vtkCamera* camera =
+    this->Camera ? this->Camera : (this->Renderer ? this->Renderer->GetActiveCamera() : nullptr);
   if (!camera)
   {
     vtkErrorMacro("Cannot render: no camera (set Camera or Renderer).");
@@ -164,7 +167,7 @@ int vtkVolumeReferenceRenderer::RequestData(
   const avs::RenderMode mode = this->RenderMode == EMISSION_ABSORPTION
     ? avs::RenderMode::EmissionAbsorption
     : (this->RenderMode == AMBIENT_OCCLUSION ? avs::RenderMode::AmbientOcclusion
-                                              : avs::RenderMode::AmbientScattering);
+                                             : avs::RenderMode::AmbientScattering);
   const avs::ScatteringTable* table = nullptr;
   if (mode == avs::RenderMode::AmbientScattering)
   {
@@ -197,7 +200,12 @@ int vtkVolumeReferenceRenderer::RequestData(
 
   this->UpdateProgress(0.0);
   avs::PrecomputedVolumes volumes;
-  if (!avs::Precompute(scene, resolved, table, mode, volumes, &error,
+  if (!avs::Precompute(scene,
+        resolved,
+        table,
+        mode,
+        volumes,
+        &error,
         [this](double v) { this->UpdateProgress(0.5 * v); }))
   {
     vtkErrorMacro("Cannot render: " << error);
@@ -205,8 +213,13 @@ int vtkVolumeReferenceRenderer::RequestData(
   }
   const int w = std::max(1, this->ImageSize[0]);
   const int h = std::max(1, this->ImageSize[1]);
-  const avs::Image image = avs::RenderReference(scene, resolved, volumes, mode,
-    vtkAVSSceneTranslator::ToCamera(camera), w, h,
+  const avs::Image image = avs::RenderReference(scene,
+    resolved,
+    volumes,
+    mode,
+    vtkAVSSceneTranslator::ToCamera(camera),
+    w,
+    h,
     [this](double v) { this->UpdateProgress(0.5 + 0.5 * v); });
 
   output->SetExtent(0, w - 1, 0, h - 1, 0, 0);

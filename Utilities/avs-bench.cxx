@@ -23,7 +23,7 @@
 namespace
 {
 
-template <typename F>
+template<typename F>
 double MedianSeconds(int runs, F&& work)
 {
   std::vector<double> t;
@@ -88,7 +88,8 @@ int main(int argc, char* argv[])
     const avs::Grid sigma = NebulaExtinction(n);
     const double radius = 3.0 * sigma.Geometry.Spacing.x;
     const double seconds = MedianSeconds(5, [&] { avs::AverageExtinction(sigma, radius); });
-    std::printf("bench sat_average_%d %.1f Mvoxel/s\n", n,
+    std::printf("bench sat_average_%d %.1f Mvoxel/s\n",
+      n,
       static_cast<double>(sigma.Values.size()) / seconds * 1e-6);
   }
 
@@ -100,16 +101,20 @@ int main(int argc, char* argv[])
     const avs::ScatteringSlice slice = table.Slice(0.3, 0.9);
     const avs::Light directional = avs::Light::Directional({ 1, 0.3, 0.2 }, { 1, 1, 1 });
     const avs::Light point = avs::Light::Point({ 0, 0, 0 }, { 1, 1, 1 });
-    for (const auto& [name, light] :
-      { std::make_pair("light_volume_directional", directional), std::make_pair("light_volume_point", point) })
+    for (const auto& [name, light] : { std::make_pair("light_volume_directional", directional),
+           std::make_pair("light_volume_point", point) })
     {
       avs::LightVolumeStatistics stats;
-      const double seconds = MedianSeconds(3, [&] {
-        avs::ComputeLightVolume(averaged, averaged.Geometry, light, slice, radius, &stats);
-      });
-      std::printf("bench %s_%d %.2f Mvoxel/s\n", name, n,
+      const double seconds = MedianSeconds(3,
+        [&]
+        { avs::ComputeLightVolume(averaged, averaged.Geometry, light, slice, radius, &stats); });
+      std::printf("bench %s_%d %.2f Mvoxel/s\n",
+        name,
+        n,
         static_cast<double>(averaged.Values.size()) / seconds * 1e-6);
-      std::printf("bench %s_steps_%d %.1f Msteps/s\n", name, n,
+      std::printf("bench %s_steps_%d %.1f Msteps/s\n",
+        name,
+        n,
         static_cast<double>(stats.Steps) / seconds * 1e-6);
     }
   }
@@ -125,26 +130,32 @@ int main(int argc, char* argv[])
     }
     const avs::ScatteringSlice slice = table.Slice(0.3, 0.9);
     double sink = 0.0;
-    const double sliceSeconds = MedianSeconds(5, [&] {
-      for (int i = 0; i < count; ++i)
+    const double sliceSeconds = MedianSeconds(5,
+      [&]
       {
-        sink += slice.InScattering(theta[i], tau[i]);
-      }
-    });
+        for (int i = 0; i < count; ++i)
+        {
+          sink += slice.InScattering(theta[i], tau[i]);
+        }
+      });
     std::printf("bench table_slice_lookups %.1f Mlookup/s\n", count / sliceSeconds * 1e-6);
-    const double fullSeconds = MedianSeconds(3, [&] {
-      for (int i = 0; i < count; ++i)
+    const double fullSeconds = MedianSeconds(3,
+      [&]
       {
-        sink += table.InScattering(theta[i], tau[i], 0.3, 0.9);
-      }
-    });
+        for (int i = 0; i < count; ++i)
+        {
+          sink += table.InScattering(theta[i], tau[i], 0.3, 0.9);
+        }
+      });
     std::printf("bench table_full_lookups %.1f Mlookup/s\n", count / fullSeconds * 1e-6);
-    const double fSeconds = MedianSeconds(5, [&] {
-      for (int i = 0; i < count; ++i)
+    const double fSeconds = MedianSeconds(5,
+      [&]
       {
-        sink += slice.ForwardTransport(tau[i]);
-      }
-    });
+        for (int i = 0; i < count; ++i)
+        {
+          sink += slice.ForwardTransport(tau[i]);
+        }
+      });
     std::printf("bench table_forward_lookups %.1f Mlookup/s\n", count / fSeconds * 1e-6);
     if (sink == 42.0)
     {

@@ -50,11 +50,17 @@ void PrintHelp(const avs::PreintegrationSettings& d)
     "\n"
     "The progress display goes to standard error. At the end the program reports the largest\n"
     "relative standard error of the significant entries of A and F, and the time taken.\n",
-    d.Axes.NumberOfTheta, d.Axes.NumberOfTau, d.Axes.TauMaximum, d.Axes.NumberOfAnisotropy,
-    d.Axes.NumberOfAlbedo, static_cast<unsigned long long>(d.Seed),
-    static_cast<unsigned long long>(d.BatchSize), static_cast<unsigned long long>(d.MinimumPaths),
+    d.Axes.NumberOfTheta,
+    d.Axes.NumberOfTau,
+    d.Axes.TauMaximum,
+    d.Axes.NumberOfAnisotropy,
+    d.Axes.NumberOfAlbedo,
+    static_cast<unsigned long long>(d.Seed),
+    static_cast<unsigned long long>(d.BatchSize),
+    static_cast<unsigned long long>(d.MinimumPaths),
     static_cast<unsigned long long>(d.MaximumPaths),
-    static_cast<unsigned long long>(d.MaximumPathsF), d.TargetRelativeError,
+    static_cast<unsigned long long>(d.MaximumPathsF),
+    d.TargetRelativeError,
     d.SignificanceThreshold);
 }
 
@@ -160,12 +166,18 @@ int main(int argc, char* argv[])
   const auto start = std::chrono::steady_clock::now();
   if (!quiet)
   {
-    settings.Progress = [start](std::size_t done, std::size_t all) {
+    settings.Progress = [start](std::size_t done, std::size_t all)
+    {
       const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       const double eta = done > 0 ? elapsed * (static_cast<double>(all) / done - 1.0) : 0.0;
-      std::fprintf(stderr, "\r[avs-preintegrate] %zu/%zu cells (%3.0f%%), %.0f s elapsed, ~%.0f s left ",
-        done, all, 100.0 * done / all, elapsed, eta);
+      std::fprintf(stderr,
+        "\r[avs-preintegrate] %zu/%zu cells (%3.0f%%), %.0f s elapsed, ~%.0f s left ",
+        done,
+        all,
+        100.0 * done / all,
+        elapsed,
+        eta);
       if (done == all)
       {
         std::fprintf(stderr, "\n");
@@ -182,18 +194,25 @@ int main(int argc, char* argv[])
     return 1;
   }
   std::printf("wrote %s\n", output.c_str());
-  std::printf("axes: theta %d, tau %d (max %g), g %d, albedo %d\n", settings.Axes.NumberOfTheta,
-    settings.Axes.NumberOfTau, settings.Axes.TauMaximum, settings.Axes.NumberOfAnisotropy,
+  std::printf("axes: theta %d, tau %d (max %g), g %d, albedo %d\n",
+    settings.Axes.NumberOfTheta,
+    settings.Axes.NumberOfTau,
+    settings.Axes.TauMaximum,
+    settings.Axes.NumberOfAnisotropy,
     settings.Axes.NumberOfAlbedo);
   std::printf("paths: %llu for A, %llu for F, %llu vertices; %zu cells stopped at --max-paths\n",
-    static_cast<unsigned long long>(stats.PathsA), static_cast<unsigned long long>(stats.PathsF),
-    static_cast<unsigned long long>(stats.Vertices), stats.CellsAtPathLimit);
+    static_cast<unsigned long long>(stats.PathsA),
+    static_cast<unsigned long long>(stats.PathsF),
+    static_cast<unsigned long long>(stats.Vertices),
+    stats.CellsAtPathLimit);
   std::printf("largest relative standard error of significant entries (>= %g of the table's "
               "largest value): "
               "A %.4f, F %.4f\n",
-    settings.SignificanceThreshold, table.MaximumRelativeErrorA(settings.SignificanceThreshold),
+    settings.SignificanceThreshold,
+    table.MaximumRelativeErrorA(settings.SignificanceThreshold),
     table.MaximumRelativeErrorF(settings.SignificanceThreshold));
-  std::printf("time: %.1f s on %d threads\n", table.GenerationSeconds,
+  std::printf("time: %.1f s on %d threads\n",
+    table.GenerationSeconds,
     settings.Threads > 0 ? settings.Threads : avs::DefaultThreadCount());
   return 0;
 }

@@ -28,7 +28,9 @@ namespace
 bool EndsWith(const std::string& s, const std::string& suffix)
 {
   return s.size() >= suffix.size() &&
-    std::equal(suffix.rbegin(), suffix.rend(), s.rbegin(),
+    std::equal(suffix.rbegin(),
+      suffix.rend(),
+      s.rbegin(),
       [](char a, char b) { return std::tolower(a) == std::tolower(b); });
 }
 
@@ -39,8 +41,8 @@ void PlaceLightsAndCamera(DemoScene& scene)
   double b[6];
   scene.Volume->GetBounds(b);
   const double c[3] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };
-  const double size =
-    std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+  const double size = std::sqrt(
+    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
 
   scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
   vtkNew<vtkLight> point;
@@ -169,7 +171,8 @@ bool LoadDemoScene(const std::string& fileName, DemoScene& scene, std::string& e
   scene.Property->SetScalarOpacity(opacity);
   double spacing[3];
   image->GetSpacing(spacing);
-  scene.Property->SetScalarOpacityUnitDistance(2.0 * std::max({ spacing[0], spacing[1], spacing[2] }));
+  scene.Property->SetScalarOpacityUnitDistance(
+    2.0 * std::max({ spacing[0], spacing[1], spacing[2] }));
   PlaceLightsAndCamera(scene);
   return true;
 }

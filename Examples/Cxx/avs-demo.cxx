@@ -117,9 +117,11 @@ int main(int argc, char* argv[])
     const char* Name;
     const char* Label;
   };
-  const Mode modes[] = { { vtkVolumeReferenceRenderer::EMISSION_ABSORPTION, "ea", "emission-absorption" },
+  const Mode modes[] = {
+    { vtkVolumeReferenceRenderer::EMISSION_ABSORPTION, "ea", "emission-absorption" },
     { vtkVolumeReferenceRenderer::AMBIENT_OCCLUSION, "ao", "ambient occlusion" },
-    { vtkVolumeReferenceRenderer::AMBIENT_SCATTERING, "as", "ambient scattering" } };
+    { vtkVolumeReferenceRenderer::AMBIENT_SCATTERING, "as", "ambient scattering" }
+  };
   vtkNew<vtkImageAppend> sideBySide;
   sideBySide->SetAppendAxis(0);
   for (const Mode& mode : modes)

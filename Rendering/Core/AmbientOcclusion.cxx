@@ -25,8 +25,12 @@ std::vector<Vec3> SphereDirections(int count)
   return dirs;
 }
 
-Grid ComputeAmbientOcclusion(const Grid& sigmaT, const GridGeometry& target, double radius,
-  int directions, double step, OcclusionStatistics* statistics,
+Grid ComputeAmbientOcclusion(const Grid& sigmaT,
+  const GridGeometry& target,
+  double radius,
+  int directions,
+  double step,
+  OcclusionStatistics* statistics,
   const std::function<void(double)>& progress)
 {
   const GridGeometry& source = sigmaT.Geometry;
@@ -54,40 +58,42 @@ Grid ComputeAmbientOcclusion(const Grid& sigmaT, const GridGeometry& target, dou
   std::atomic<std::uint64_t> samples{ 0 };
   std::atomic<int> slicesDone{ 0 };
   const std::thread::id caller = std::this_thread::get_id();
-  ParallelFor(dims[2], [&](std::int64_t b, std::int64_t e) {
-    std::uint64_t local = 0;
-    for (std::int64_t k = b; k < e; ++k)
+  ParallelFor(dims[2],
+    [&](std::int64_t b, std::int64_t e)
     {
-      for (int j = 0; j < dims[1]; ++j)
+      std::uint64_t local = 0;
+      for (std::int64_t k = b; k < e; ++k)
       {
-        for (int i = 0; i < dims[0]; ++i)
+        for (int j = 0; j < dims[1]; ++j)
         {
-          const Vec3 world = target.IndexToWorld(
-            { static_cast<double>(i), static_cast<double>(j), static_cast<double>(k) });
-          const Vec3 base = source.WorldToIndex(world);
-          double sum = 0.0;
-          std::size_t o = 0;
-          for (std::size_t d = 0; d < dirs.size(); ++d)
+          for (int i = 0; i < dims[0]; ++i)
           {
-            double optical = 0.0;
-            for (int s = 0; s < n; ++s, ++o)
+            const Vec3 world = target.IndexToWorld(
+              { static_cast<double>(i), static_cast<double>(j), static_cast<double>(k) });
+            const Vec3 base = source.WorldToIndex(world);
+            double sum = 0.0;
+            std::size_t o = 0;
+            for (std::size_t d = 0; d < dirs.size(); ++d)
             {
-              optical += sigmaT.SampleIndex(base + offsets[o], 0.0);
+              double optical = 0.0;
+              for (int s = 0; s < n; ++s, ++o)
+              {
+                optical += sigmaT.SampleIndex(base + offsets[o], 0.0);
+              }
+              sum += std::exp(-optical * h);
             }
-            sum += std::exp(-optical * h);
+            local += offsets.size();
+            out.At(i, j, static_cast<int>(k)) = static_cast<float>(sum / dirs.size());
           }
-          local += offsets.size();
-          out.At(i, j, static_cast<int>(k)) = static_cast<float>(sum / dirs.size());
+        }
+        const int done = ++slicesDone;
+        if (progress && std::this_thread::get_id() == caller)
+        {
+          progress(static_cast<double>(done) / dims[2]);
         }
       }
-      const int done = ++slicesDone;
-      if (progress && std::this_thread::get_id() == caller)
-      {
-        progress(static_cast<double>(done) / dims[2]);
-      }
-    }
-    samples += local;
-  });
+      samples += local;
+    });
   if (statistics)
   {
     statistics->Samples = samples.load();

@@ -26,8 +26,12 @@ struct OcclusionStatistics
 
 /// AO on the grid `target` from the extinction grid `sigmaT` (same box). Integration by the
 /// midpoint rule with step `step` (0: half the smallest spacing). Multi-threaded.
-Grid ComputeAmbientOcclusion(const Grid& sigmaT, const GridGeometry& target, double radius,
-  int directions, double step = 0.0, OcclusionStatistics* statistics = nullptr,
+Grid ComputeAmbientOcclusion(const Grid& sigmaT,
+  const GridGeometry& target,
+  double radius,
+  int directions,
+  double step = 0.0,
+  OcclusionStatistics* statistics = nullptr,
   const std::function<void(double)>& progress = {});
 
 } // namespace avs

@@ -26,18 +26,24 @@ std::array<int, 3> AveragingHalfWidths(double radius, const Vec3& spacing)
 namespace
 {
 // Box sum of half width k along one axis of `data`, written into `out` (may not alias).
-void BoxPass(const std::vector<float>& data, std::vector<float>& out, const std::array<int, 3>& dims,
-  int axis, int k, std::atomic<std::uint64_t>& operations)
+void BoxPass(const std::vector<float>& data,
+  std::vector<float>& out,
+  const std::array<int, 3>& dims,
+  int axis,
+  int k,
+  std::atomic<std::uint64_t>& operations)
 {
-  const std::size_t stride =
-    axis == 0 ? 1 : (axis == 1 ? static_cast<std::size_t>(dims[0]) : static_cast<std::size_t>(dims[0]) * dims[1]);
+  const std::size_t stride = axis == 0
+    ? 1
+    : (axis == 1 ? static_cast<std::size_t>(dims[0]) : static_cast<std::size_t>(dims[0]) * dims[1]);
   const int n = dims[axis];
   // The lines of this axis: indexed by the other two coordinates.
   const int o1 = axis == 0 ? dims[1] : dims[0];
   const int o2 = axis == 2 ? dims[1] : dims[2];
   ParallelFor(
     static_cast<std::int64_t>(o1) * o2,
-    [&](std::int64_t b, std::int64_t e) {
+    [&](std::int64_t b, std::int64_t e)
+    {
       std::vector<double> prefix(n + 1);
       std::uint64_t ops = 0;
       for (std::int64_t line = b; line < e; ++line)
@@ -66,12 +72,15 @@ void BoxPass(const std::vector<float>& data, std::vector<float>& out, const std:
       }
       operations += ops;
     },
-    0, 64);
+    0,
+    64);
 }
 } // namespace
 
-Grid BoxMean(const Grid& values, const std::array<int, 3>& halfWidths,
-  AveragingStatistics* statistics, const std::function<void(double)>& progress)
+Grid BoxMean(const Grid& values,
+  const std::array<int, 3>& halfWidths,
+  AveragingStatistics* statistics,
+  const std::function<void(double)>& progress)
 {
   const auto& dims = values.Geometry.Dimensions;
   std::atomic<std::uint64_t> operations{ 0 };
@@ -102,10 +111,13 @@ Grid BoxMean(const Grid& values, const std::array<int, 3>& halfWidths,
   return out;
 }
 
-Grid AverageExtinction(const Grid& sigmaT, double radius, AveragingStatistics* statistics,
+Grid AverageExtinction(const Grid& sigmaT,
+  double radius,
+  AveragingStatistics* statistics,
   const std::function<void(double)>& progress)
 {
-  return BoxMean(sigmaT, AveragingHalfWidths(radius, sigmaT.Geometry.Spacing), statistics, progress);
+  return BoxMean(
+    sigmaT, AveragingHalfWidths(radius, sigmaT.Geometry.Spacing), statistics, progress);
 }
 
 } // namespace avs

@@ -37,12 +37,16 @@ struct AveragingStatistics
 
 /// Averaged extinction on the grid of `sigmaT` (same geometry). Multi-threaded.
 /// `progress` (optional) receives values in [0, 1].
-Grid AverageExtinction(const Grid& sigmaT, double radius, AveragingStatistics* statistics = nullptr,
+Grid AverageExtinction(const Grid& sigmaT,
+  double radius,
+  AveragingStatistics* statistics = nullptr,
   const std::function<void(double)>& progress = {});
 
 /// Mean over an arbitrary half-width box (the building block of AverageExtinction).
-Grid BoxMean(const Grid& values, const std::array<int, 3>& halfWidths,
-  AveragingStatistics* statistics = nullptr, const std::function<void(double)>& progress = {});
+Grid BoxMean(const Grid& values,
+  const std::array<int, 3>& halfWidths,
+  AveragingStatistics* statistics = nullptr,
+  const std::function<void(double)>& progress = {});
 
 } // namespace avs
 

@@ -11,14 +11,16 @@ Vec3 GridGeometry::WorldToLocalDirection(const Vec3& d) const
 {
   const auto& m = this->Direction;
   // D is orthonormal: its inverse is its transpose.
-  return { m[0] * d.x + m[3] * d.y + m[6] * d.z, m[1] * d.x + m[4] * d.y + m[7] * d.z,
+  return { m[0] * d.x + m[3] * d.y + m[6] * d.z,
+    m[1] * d.x + m[4] * d.y + m[7] * d.z,
     m[2] * d.x + m[5] * d.y + m[8] * d.z };
 }
 
 Vec3 GridGeometry::LocalToWorldDirection(const Vec3& d) const
 {
   const auto& m = this->Direction;
-  return { m[0] * d.x + m[1] * d.y + m[2] * d.z, m[3] * d.x + m[4] * d.y + m[5] * d.z,
+  return { m[0] * d.x + m[1] * d.y + m[2] * d.z,
+    m[3] * d.x + m[4] * d.y + m[5] * d.z,
     m[6] * d.x + m[7] * d.y + m[8] * d.z };
 }
 

@@ -41,12 +41,19 @@ struct GridGeometry
   /// A local-frame direction in world space.
   Vec3 LocalToWorldDirection(const Vec3& d) const;
   /// A world point in the local frame: local = D^T (world - origin); the box is [0, (n-1) s].
-  Vec3 WorldToLocal(const Vec3& world) const { return this->WorldToLocalDirection(world - this->Origin); }
-  Vec3 LocalToWorld(const Vec3& local) const { return this->Origin + this->LocalToWorldDirection(local); }
+  Vec3 WorldToLocal(const Vec3& world) const
+  {
+    return this->WorldToLocalDirection(world - this->Origin);
+  }
+  Vec3 LocalToWorld(const Vec3& local) const
+  {
+    return this->Origin + this->LocalToWorldDirection(local);
+  }
   /// Upper corner of the box in the local frame, (n - 1) * spacing per axis.
   Vec3 LocalExtent() const
   {
-    return { (this->Dimensions[0] - 1) * this->Spacing.x, (this->Dimensions[1] - 1) * this->Spacing.y,
+    return { (this->Dimensions[0] - 1) * this->Spacing.x,
+      (this->Dimensions[1] - 1) * this->Spacing.y,
       (this->Dimensions[2] - 1) * this->Spacing.z };
   }
   /// The same placement with other dimensions covering the same box (for coarser grids).

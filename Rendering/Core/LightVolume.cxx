@@ -60,8 +60,12 @@ bool LightPathStart(const GridGeometry& geometry, const Light& light, const Vec3
   return true;
 }
 
-double March(const Grid& averaged, const ScatteringSlice& slice, double radius, const Vec3& x0,
-  const Vec3& x, std::uint64_t& steps)
+double March(const Grid& averaged,
+  const ScatteringSlice& slice,
+  double radius,
+  const Vec3& x0,
+  const Vec3& x,
+  std::uint64_t& steps)
 {
   const double distance = Length(x - x0);
   if (!(distance > 0.0))
@@ -95,16 +99,20 @@ std::array<int, 3> LightVolumeDimensions(const std::array<int, 3>& dims, int max
   {
     for (int a = 0; a < 3; ++a)
     {
-      out[a] = std::max(2, static_cast<int>(std::lround(
-                             static_cast<double>(dims[a]) * maximum / largest)));
+      out[a] = std::max(
+        2, static_cast<int>(std::lround(static_cast<double>(dims[a]) * maximum / largest)));
       out[a] = std::min(out[a], dims[a]);
     }
   }
   return out;
 }
 
-double TubeTransmittance(const Grid& averaged, const Light& light, const ScatteringSlice& slice,
-  double radius, const Vec3& world, std::uint64_t* steps)
+double TubeTransmittance(const Grid& averaged,
+  const Light& light,
+  const ScatteringSlice& slice,
+  double radius,
+  const Vec3& world,
+  std::uint64_t* steps)
 {
   const GridGeometry& geometry = averaged.Geometry;
   const Vec3 o = geometry.WorldToLocal(world);
@@ -119,8 +127,12 @@ double TubeTransmittance(const Grid& averaged, const Light& light, const Scatter
   return t;
 }
 
-Grid ComputeLightVolume(const Grid& averaged, const GridGeometry& target, const Light& light,
-  const ScatteringSlice& slice, double radius, LightVolumeStatistics* statistics,
+Grid ComputeLightVolume(const Grid& averaged,
+  const GridGeometry& target,
+  const Light& light,
+  const ScatteringSlice& slice,
+  double radius,
+  LightVolumeStatistics* statistics,
   const std::function<void(double)>& progress)
 {
   Grid out(target, 1.0f);
@@ -128,29 +140,31 @@ Grid ComputeLightVolume(const Grid& averaged, const GridGeometry& target, const 
   std::atomic<std::uint64_t> steps{ 0 };
   std::atomic<int> slicesDone{ 0 };
   const std::thread::id caller = std::this_thread::get_id();
-  ParallelFor(dims[2], [&](std::int64_t b, std::int64_t e) {
-    std::uint64_t local = 0;
-    for (std::int64_t k = b; k < e; ++k)
+  ParallelFor(dims[2],
+    [&](std::int64_t b, std::int64_t e)
     {
-      for (int j = 0; j < dims[1]; ++j)
+      std::uint64_t local = 0;
+      for (std::int64_t k = b; k < e; ++k)
       {
-        for (int i = 0; i < dims[0]; ++i)
+        for (int j = 0; j < dims[1]; ++j)
         {
-          const Vec3 world = target.IndexToWorld({ static_cast<double>(i), static_cast<double>(j),
-            static_cast<double>(k) });
-          out.At(i, j, static_cast<int>(k)) = static_cast<float>(
-            TubeTransmittance(averaged, light, slice, radius, world, &local));
+          for (int i = 0; i < dims[0]; ++i)
+          {
+            const Vec3 world = target.IndexToWorld(
+              { static_cast<double>(i), static_cast<double>(j), static_cast<double>(k) });
+            out.At(i, j, static_cast<int>(k)) =
+              static_cast<float>(TubeTransmittance(averaged, light, slice, radius, world, &local));
+          }
+        }
+        const int done = ++slicesDone;
+        // Progress is reported from the calling thread only (VTK observers are not thread-safe).
+        if (progress && std::this_thread::get_id() == caller)
+        {
+          progress(static_cast<double>(done) / dims[2]);
         }
       }
-      const int done = ++slicesDone;
-      // Progress is reported from the calling thread only (VTK observers are not thread-safe).
-      if (progress && std::this_thread::get_id() == caller)
-      {
-        progress(static_cast<double>(done) / dims[2]);
-      }
-    }
-    steps += local;
-  });
+      steps += local;
+    });
   if (statistics)
   {
     statistics->Steps = steps.load();

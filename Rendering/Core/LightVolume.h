@@ -26,13 +26,21 @@ struct LightVolumeStatistics
 
 /// Tube transmittance of `light` on the grid `target` (same box as `averaged`). `slice` holds F
 /// for the current g and albedo; `radius` is the ambient radius r (> 0). Multi-threaded.
-Grid ComputeLightVolume(const Grid& averaged, const GridGeometry& target, const Light& light,
-  const ScatteringSlice& slice, double radius, LightVolumeStatistics* statistics = nullptr,
+Grid ComputeLightVolume(const Grid& averaged,
+  const GridGeometry& target,
+  const Light& light,
+  const ScatteringSlice& slice,
+  double radius,
+  LightVolumeStatistics* statistics = nullptr,
   const std::function<void(double)>& progress = {});
 
 /// The tube transmittance at one world point (what ComputeLightVolume stores per voxel).
-double TubeTransmittance(const Grid& averaged, const Light& light, const ScatteringSlice& slice,
-  double radius, const Vec3& world, std::uint64_t* steps = nullptr);
+double TubeTransmittance(const Grid& averaged,
+  const Light& light,
+  const ScatteringSlice& slice,
+  double radius,
+  const Vec3& world,
+  std::uint64_t* steps = nullptr);
 
 /// Dimensions of a light volume for data of dimensions `dims` capped at `maximum` per axis,
 /// keeping the aspect ratio.

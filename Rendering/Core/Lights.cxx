@@ -45,8 +45,8 @@ Vec3 Light::FreeIrradiance(const Vec3& x) const
     return this->Irradiance;
   }
   const double dist = Length(x - this->Position);
-  const double att = this->Attenuation.x + this->Attenuation.y * dist +
-    this->Attenuation.z * dist * dist;
+  const double att =
+    this->Attenuation.x + this->Attenuation.y * dist + this->Attenuation.z * dist * dist;
   double scale = att > 0.0 ? 1.0 / att : 0.0;
   if (this->IsSpot())
   {

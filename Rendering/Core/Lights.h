@@ -29,7 +29,9 @@ struct Light
   double Exponent = 1.0;       ///< spot exponent
 
   static Light Directional(const Vec3& propagation, const Vec3& irradiance);
-  static Light Point(const Vec3& position, const Vec3& irradiance, const Vec3& attenuation = { 1, 0, 0 });
+  static Light Point(const Vec3& position,
+    const Vec3& irradiance,
+    const Vec3& attenuation = { 1, 0, 0 });
 
   bool IsSpot() const { return this->Type == LightType::Positional && this->ConeAngle < 90.0; }
 

@@ -29,7 +29,7 @@ inline int DefaultThreadCount()
 }
 
 /// Calls body(begin, end) on chunks of [0, count) from `threads` threads (0: the default).
-template <typename Body>
+template<typename Body>
 void ParallelFor(std::int64_t count, Body&& body, int threads = 0, std::int64_t grain = 1)
 {
   if (count <= 0)
@@ -44,7 +44,8 @@ void ParallelFor(std::int64_t count, Body&& body, int threads = 0, std::int64_t 
   const std::int64_t chunks = (count + grain - 1) / grain;
   threads = static_cast<int>(std::min<std::int64_t>(threads, chunks));
   std::atomic<std::int64_t> next{ 0 };
-  auto worker = [&]() {
+  auto worker = [&]()
+  {
     for (;;)
     {
       const std::int64_t c = next.fetch_add(1);

@@ -39,7 +39,8 @@ double SampleHenyeyGreensteinCosine(double u, double g);
 /// from two uniform numbers in [0, 1). The returned pdf is the phase function's value.
 PhaseSample SampleHenyeyGreenstein(const Vec3& incoming, double g, double u1, double u2);
 
-/// The pdf of SampleHenyeyGreenstein: identical to the phase function (perfect importance sampling).
+/// The pdf of SampleHenyeyGreenstein: identical to the phase function (perfect importance
+/// sampling).
 inline double HenyeyGreensteinPdf(double mu, double g)
 {
   return HenyeyGreenstein(mu, g);

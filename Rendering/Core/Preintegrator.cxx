@@ -136,7 +136,8 @@ public:
       {
         const Vec3 x = x0 + dir * s;
         const double pe = this->Tau * std::exp(-this->Tau * s) / pCollide;
-        const double f = this->Tau * std::exp(-this->Tau * (s + ExitDistance(x, -this->Lights[i]))) * phase;
+        const double f =
+          this->Tau * std::exp(-this->Tau * (s + ExitDistance(x, -this->Lights[i]))) * phase;
         sum += f / (pe + 1.0 / chord);
       }
       this->Order[i] = sum;
@@ -180,7 +181,8 @@ public:
     // Order 1: exit direction w (light leaves along w, the path goes along -w), MIS between
     // (cosine-distributed w, exponential s) and (w from the phase function around the light,
     // uniform s). The integrand is cos(w) sigma_s T(s) p(light . w) exp(-tau b).
-    auto orderOne = [&](const Vec3& w, double s) {
+    auto orderOne = [&](const Vec3& w, double s)
+    {
       const double cosW = w.z;
       if (!(cosW > 0.0))
       {
@@ -193,7 +195,8 @@ public:
       }
       const Vec3 x = xf - w * s;
       const double phase = HenyeyGreenstein(Dot(light, w), this->G);
-      const double f = cosW * this->Tau * std::exp(-this->Tau * (s + ExitDistance(x, -light))) * phase;
+      const double f =
+        cosW * this->Tau * std::exp(-this->Tau * (s + ExitDistance(x, -light))) * phase;
       const double pe = this->Tau * std::exp(-this->Tau * s) / -std::expm1(-this->Tau * chord);
       return f / (cosW / Pi * pe + phase / chord);
     };
@@ -389,8 +392,12 @@ struct CellResult
   bool AtLimit = false;
 };
 
-CellResult ComputeCell(const PreintegrationSettings& settings, ScatteringTable& table, int j, int k,
-  double thresholdA, double thresholdF)
+CellResult ComputeCell(const PreintegrationSettings& settings,
+  ScatteringTable& table,
+  int j,
+  int k,
+  double thresholdA,
+  double thresholdF)
 {
   const auto& ax = settings.Axes;
   const double tau = ax.Tau(j);
@@ -509,8 +516,8 @@ CellResult ComputeCell(const PreintegrationSettings& settings, ScatteringTable& 
 
 } // namespace
 
-ScatteringTable Preintegrate(
-  const PreintegrationSettings& settings, PreintegrationStatistics* statistics)
+ScatteringTable Preintegrate(const PreintegrationSettings& settings,
+  PreintegrationStatistics* statistics)
 {
   const auto start = std::chrono::steady_clock::now();
   ScatteringTable table;
@@ -530,7 +537,8 @@ ScatteringTable Preintegrate(
     }
   }
   // Expensive cells (large tau) first, for better load balance.
-  std::stable_sort(cells.begin(), cells.end(),
+  std::stable_sort(cells.begin(),
+    cells.end(),
     [](const std::pair<int, int>& a, const std::pair<int, int>& b) { return a.first > b.first; });
 
   // Significance thresholds relative to the table's largest values, which are analytic: A peaks
@@ -548,7 +556,8 @@ ScatteringTable Preintegrate(
   PreintegrationStatistics stats;
   ParallelFor(
     static_cast<std::int64_t>(cells.size()),
-    [&](std::int64_t b, std::int64_t e) {
+    [&](std::int64_t b, std::int64_t e)
+    {
       for (std::int64_t c = b; c < e; ++c)
       {
         const CellResult r =

@@ -37,13 +37,13 @@ struct PreintegrationSettings
 {
   ScatteringTableAxes Axes;
   std::uint64_t Seed = 1;
-  std::uint64_t BatchSize = 2048;      ///< paths per batch (for A and for F each)
-  std::uint64_t MinimumPaths = 8192;   ///< per cell, before the error is checked
-  std::uint64_t MaximumPaths = 1 << 18; ///< per cell, for A
+  std::uint64_t BatchSize = 2048;        ///< paths per batch (for A and for F each)
+  std::uint64_t MinimumPaths = 8192;     ///< per cell, before the error is checked
+  std::uint64_t MaximumPaths = 1 << 18;  ///< per cell, for A
   std::uint64_t MaximumPathsF = 1 << 22; ///< per cell, for F (its paths are much cheaper)
-  double TargetRelativeError = 0.008;  ///< stop a cell once all significant entries are below
-  double SignificanceThreshold = 1e-3; ///< relative to the table's largest A (or F)
-  int Threads = 0;                     ///< 0: DefaultThreadCount()
+  double TargetRelativeError = 0.008;    ///< stop a cell once all significant entries are below
+  double SignificanceThreshold = 1e-3;   ///< relative to the table's largest A (or F)
+  int Threads = 0;                       ///< 0: DefaultThreadCount()
   /// Optional subset of cells (tau index, g index) to compute; empty: all. Other cells stay 0.
   std::vector<std::pair<int, int>> Cells;
   /// Called with (cells done, cells in all) from the worker threads, serialised.
@@ -59,8 +59,8 @@ struct PreintegrationStatistics
 };
 
 /// Runs the generator. Cells with tau = 0 are analytic: A = albedo p_g(cos theta), F = 1.
-ScatteringTable Preintegrate(
-  const PreintegrationSettings& settings, PreintegrationStatistics* statistics = nullptr);
+ScatteringTable Preintegrate(const PreintegrationSettings& settings,
+  PreintegrationStatistics* statistics = nullptr);
 
 } // namespace avs
 

@@ -14,7 +14,8 @@ namespace
 inline double LatticeValue(std::int64_t i, std::int64_t j, std::int64_t k, std::uint64_t seed)
 {
   const std::uint64_t h = HashSeed(static_cast<std::uint64_t>(i) * 73856093ULL,
-    static_cast<std::uint64_t>(j) * 19349663ULL, static_cast<std::uint64_t>(k) * 83492791ULL ^ seed);
+    static_cast<std::uint64_t>(j) * 19349663ULL,
+    static_cast<std::uint64_t>(k) * 83492791ULL ^ seed);
   return static_cast<double>(h >> 11) * (1.0 / 9007199254740992.0);
 }
 inline double Smooth(double t)
@@ -38,24 +39,28 @@ Grid MakeGrid(int n)
   return Grid(g);
 }
 
-template <typename Density>
+template<typename Density>
 Grid Fill(int n, Density density)
 {
   Grid grid = MakeGrid(n);
   const auto& g = grid.Geometry;
-  ParallelFor(g.Dimensions[2], [&](std::int64_t b, std::int64_t e) {
-    for (std::int64_t k = b; k < e; ++k)
+  ParallelFor(g.Dimensions[2],
+    [&](std::int64_t b, std::int64_t e)
     {
-      for (int j = 0; j < g.Dimensions[1]; ++j)
+      for (std::int64_t k = b; k < e; ++k)
       {
-        for (int i = 0; i < g.Dimensions[0]; ++i)
+        for (int j = 0; j < g.Dimensions[1]; ++j)
         {
-          const Vec3 p = g.IndexToWorld({ static_cast<double>(i), static_cast<double>(j), static_cast<double>(k) });
-          grid.At(i, j, static_cast<int>(k)) = static_cast<float>(std::clamp(density(p), 0.0, 1.0));
+          for (int i = 0; i < g.Dimensions[0]; ++i)
+          {
+            const Vec3 p = g.IndexToWorld(
+              { static_cast<double>(i), static_cast<double>(j), static_cast<double>(k) });
+            grid.At(i, j, static_cast<int>(k)) =
+              static_cast<float>(std::clamp(density(p), 0.0, 1.0));
+          }
         }
       }
-    }
-  });
+    });
   return grid;
 }
 } // namespace
@@ -96,30 +101,35 @@ double FractalNoise(const Vec3& p, int octaves, std::uint64_t seed)
 
 Grid MakeNebula(int n, std::uint64_t seed)
 {
-  return Fill(n, [seed](const Vec3& p) {
-    // Domain warp for filaments.
-    const Vec3 q = p * 2.5;
-    const Vec3 warp{ FractalNoise(q + Vec3{ 3.1, 0, 0 }, 3, seed + 1),
-      FractalNoise(q + Vec3{ 0, 5.7, 0 }, 3, seed + 2), FractalNoise(q + Vec3{ 0, 0, 9.3 }, 3, seed + 3) };
-    const Vec3 pw = p + (warp - Vec3{ 0.5, 0.5, 0.5 }) * 0.35;
-    const double r = Length(pw);
-    const double shell = SmoothStep(0.22, 0.42, r) * (1.0 - SmoothStep(0.62, 0.92, r));
-    const double turbulence = FractalNoise(pw * 4.0, 5, seed);
-    const double detail = SmoothStep(0.35, 0.75, turbulence);
-    return shell * detail * 1.4;
-  });
+  return Fill(n,
+    [seed](const Vec3& p)
+    {
+      // Domain warp for filaments.
+      const Vec3 q = p * 2.5;
+      const Vec3 warp{ FractalNoise(q + Vec3{ 3.1, 0, 0 }, 3, seed + 1),
+        FractalNoise(q + Vec3{ 0, 5.7, 0 }, 3, seed + 2),
+        FractalNoise(q + Vec3{ 0, 0, 9.3 }, 3, seed + 3) };
+      const Vec3 pw = p + (warp - Vec3{ 0.5, 0.5, 0.5 }) * 0.35;
+      const double r = Length(pw);
+      const double shell = SmoothStep(0.22, 0.42, r) * (1.0 - SmoothStep(0.62, 0.92, r));
+      const double turbulence = FractalNoise(pw * 4.0, 5, seed);
+      const double detail = SmoothStep(0.35, 0.75, turbulence);
+      return shell * detail * 1.4;
+    });
 }
 
 Grid MakeCloud(int n, std::uint64_t seed)
 {
-  return Fill(n, [seed](const Vec3& p) {
-    const Vec3 q{ p.x * 0.9, (p.y + 0.15) * 1.4, p.z * 0.9 };
-    const double billows = FractalNoise(p * 3.0, 5, seed);
-    const double r = Length(q) + 0.45 * (billows - 0.5);
-    const double body = 1.0 - SmoothStep(0.55, 0.8, r);
-    const double bottom = SmoothStep(-0.55, -0.35, p.y);
-    return body * bottom * (0.6 + 0.8 * FractalNoise(p * 7.0, 3, seed + 5));
-  });
+  return Fill(n,
+    [seed](const Vec3& p)
+    {
+      const Vec3 q{ p.x * 0.9, (p.y + 0.15) * 1.4, p.z * 0.9 };
+      const double billows = FractalNoise(p * 3.0, 5, seed);
+      const double r = Length(q) + 0.45 * (billows - 0.5);
+      const double body = 1.0 - SmoothStep(0.55, 0.8, r);
+      const double bottom = SmoothStep(-0.55, -0.35, p.y);
+      return body * bottom * (0.6 + 0.8 * FractalNoise(p * 7.0, 3, seed + 5));
+    });
 }
 
 } // namespace avs

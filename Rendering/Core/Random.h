@@ -45,7 +45,8 @@ private:
 /// Mixes integers into one well-spread 64-bit seed (splitmix64 finaliser).
 inline std::uint64_t HashSeed(std::uint64_t a, std::uint64_t b = 0, std::uint64_t c = 0)
 {
-  auto mix = [](std::uint64_t z) {
+  auto mix = [](std::uint64_t z)
+  {
     z += 0x9e3779b97f4a7c15ULL;
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
     z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;

@@ -42,8 +42,12 @@ inline double SampleLocal(const Grid& g, const Vec3& local, double outside)
 }
 } // namespace
 
-bool Precompute(const VolumeScene& scene, const ScatteringParameters& p,
-  const ScatteringTable* table, RenderMode mode, PrecomputedVolumes& out, std::string* error,
+bool Precompute(const VolumeScene& scene,
+  const ScatteringParameters& p,
+  const ScatteringTable* table,
+  RenderMode mode,
+  PrecomputedVolumes& out,
+  std::string* error,
   const std::function<void(double)>& progress)
 {
   if (scene.Scalars.Values.empty() ||
@@ -63,7 +67,8 @@ bool Precompute(const VolumeScene& scene, const ScatteringParameters& p,
     }
     return false;
   }
-  auto report = [&](double v) {
+  auto report = [&](double v)
+  {
     if (progress)
     {
       progress(v);
@@ -75,8 +80,13 @@ bool Precompute(const VolumeScene& scene, const ScatteringParameters& p,
   const GridGeometry& geometry = scene.Scalars.Geometry;
   if (mode == RenderMode::AmbientOcclusion)
   {
-    out.Occlusion = ComputeAmbientOcclusion(out.Extinction, geometry, p.OcclusionRadius,
-      p.NumberOfDirections, 0.0, nullptr, [&](double v) { report(0.1 + 0.9 * v); });
+    out.Occlusion = ComputeAmbientOcclusion(out.Extinction,
+      geometry,
+      p.OcclusionRadius,
+      p.NumberOfDirections,
+      0.0,
+      nullptr,
+      [&](double v) { report(0.1 + 0.9 * v); });
   }
   else if (mode == RenderMode::AmbientScattering)
   {
@@ -88,8 +98,12 @@ bool Precompute(const VolumeScene& scene, const ScatteringParameters& p,
     const std::size_t n = scene.Lights.size();
     for (std::size_t j = 0; j < n; ++j)
     {
-      out.LightVolumes.push_back(ComputeLightVolume(out.Averaged, lightGeometry, scene.Lights[j],
-        out.Slice, p.AmbientRadius, nullptr,
+      out.LightVolumes.push_back(ComputeLightVolume(out.Averaged,
+        lightGeometry,
+        scene.Lights[j],
+        out.Slice,
+        p.AmbientRadius,
+        nullptr,
         [&](double v) { report(0.2 + 0.8 * (j + v) / n); }));
     }
   }
@@ -101,8 +115,12 @@ namespace
 {
 
 // One ray, front to back. Returns premultiplied L and alpha.
-void CastRay(const VolumeScene& scene, const ScatteringParameters& p, const PrecomputedVolumes& v,
-  RenderMode mode, const Ray& ray, float* pixel)
+void CastRay(const VolumeScene& scene,
+  const ScatteringParameters& p,
+  const PrecomputedVolumes& v,
+  RenderMode mode,
+  const Ray& ray,
+  float* pixel)
 {
   pixel[0] = pixel[1] = pixel[2] = pixel[3] = 0.0f;
   const GridGeometry& geometry = scene.Scalars.Geometry;
@@ -118,7 +136,8 @@ void CastRay(const VolumeScene& scene, const ScatteringParameters& p, const Prec
   const double dt = (t1 - t0) / n;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   // sigma_t and colour at a local point: classification after interpolation, as on the GPU.
-  auto classify = [&](const Vec3& x, double& sigmaT, Vec3& color) {
+  auto classify = [&](const Vec3& x, double& sigmaT, Vec3& color)
+  {
     const double s = SampleLocal(scene.Scalars, x, nan);
     if (!(s == s))
     {
@@ -153,7 +172,9 @@ void CastRay(const VolumeScene& scene, const ScatteringParameters& p, const Prec
         for (const Light& light : scene.Lights)
         {
           const double mu = Dot(light.PropagationDirection(world), -ray.Direction);
-          direct = direct + light.FreeIrradiance(world) * (4.0 * Pi * p.Albedo * HenyeyGreenstein(mu, p.Anisotropy));
+          direct = direct +
+            light.FreeIrradiance(world) *
+              (4.0 * Pi * p.Albedo * HenyeyGreenstein(mu, p.Anisotropy));
         }
         L = L + Mul(c, direct) * (T * (1.0 - extinction) * p.DirectLightWeight);
       }
@@ -194,8 +215,13 @@ void CastRay(const VolumeScene& scene, const ScatteringParameters& p, const Prec
 
 } // namespace
 
-Image RenderReference(const VolumeScene& scene, const ScatteringParameters& p,
-  const PrecomputedVolumes& volumes, RenderMode mode, const Camera& camera, int width, int height,
+Image RenderReference(const VolumeScene& scene,
+  const ScatteringParameters& p,
+  const PrecomputedVolumes& volumes,
+  RenderMode mode,
+  const Camera& camera,
+  int width,
+  int height,
   const std::function<void(double)>& progress)
 {
   Image image;
@@ -204,21 +230,23 @@ Image RenderReference(const VolumeScene& scene, const ScatteringParameters& p,
   image.Pixels.assign(4 * static_cast<std::size_t>(image.Width) * image.Height, 0.0f);
   std::atomic<int> rows{ 0 };
   const std::thread::id caller = std::this_thread::get_id();
-  ParallelFor(image.Height, [&](std::int64_t b, std::int64_t e) {
-    for (std::int64_t y = b; y < e; ++y)
+  ParallelFor(image.Height,
+    [&](std::int64_t b, std::int64_t e)
     {
-      for (int x = 0; x < image.Width; ++x)
+      for (std::int64_t y = b; y < e; ++y)
       {
-        const Ray ray = camera.GenerateRay(x + 0.5, y + 0.5, image.Width, image.Height);
-        CastRay(scene, p, volumes, mode, ray, image.At(x, static_cast<int>(y)));
+        for (int x = 0; x < image.Width; ++x)
+        {
+          const Ray ray = camera.GenerateRay(x + 0.5, y + 0.5, image.Width, image.Height);
+          CastRay(scene, p, volumes, mode, ray, image.At(x, static_cast<int>(y)));
+        }
+        const int done = ++rows;
+        if (progress && std::this_thread::get_id() == caller)
+        {
+          progress(static_cast<double>(done) / image.Height);
+        }
       }
-      const int done = ++rows;
-      if (progress && std::this_thread::get_id() == caller)
-      {
-        progress(static_cast<double>(done) / image.Height);
-      }
-    }
-  });
+    });
   return image;
 }
 

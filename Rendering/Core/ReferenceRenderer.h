@@ -38,7 +38,10 @@ struct Image
   int Height = 0;
   std::vector<float> Pixels;
 
-  float* At(int x, int y) { return &this->Pixels[4 * (static_cast<std::size_t>(y) * this->Width + x)]; }
+  float* At(int x, int y)
+  {
+    return &this->Pixels[4 * (static_cast<std::size_t>(y) * this->Width + x)];
+  }
   const float* At(int x, int y) const
   {
     return &this->Pixels[4 * (static_cast<std::size_t>(y) * this->Width + x)];
@@ -62,13 +65,22 @@ Grid ExtinctionGrid(const VolumeScene& scene);
 
 /// Computes what `mode` needs (the table is needed for ambient scattering). Returns false and
 /// says why in `error` for unusable input.
-bool Precompute(const VolumeScene& scene, const ScatteringParameters& resolved,
-  const ScatteringTable* table, RenderMode mode, PrecomputedVolumes& out, std::string* error = nullptr,
+bool Precompute(const VolumeScene& scene,
+  const ScatteringParameters& resolved,
+  const ScatteringTable* table,
+  RenderMode mode,
+  PrecomputedVolumes& out,
+  std::string* error = nullptr,
   const std::function<void(double)>& progress = {});
 
 /// Renders the scene. `resolved` must come from ScatteringParameters::Resolve.
-Image RenderReference(const VolumeScene& scene, const ScatteringParameters& resolved,
-  const PrecomputedVolumes& volumes, RenderMode mode, const Camera& camera, int width, int height,
+Image RenderReference(const VolumeScene& scene,
+  const ScatteringParameters& resolved,
+  const PrecomputedVolumes& volumes,
+  RenderMode mode,
+  const Camera& camera,
+  int width,
+  int height,
   const std::function<void(double)>& progress = {});
 
 } // namespace avs

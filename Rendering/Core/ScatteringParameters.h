@@ -22,15 +22,15 @@ enum class RenderMode
 struct ScatteringParameters
 {
   // Medium (section 1).
-  double Albedo = 0.9;        ///< Lambda in [0, 1]
-  double Anisotropy = 0.0;    ///< Henyey–Greenstein g in [-0.95, 0.95]
-  double AmbientRadius = 0.0; ///< r in world units; 0: automatic
+  double Albedo = 0.9;         ///< Lambda in [0, 1]
+  double Anisotropy = 0.0;     ///< Henyey–Greenstein g in [-0.95, 0.95]
+  double AmbientRadius = 0.0;  ///< r in world units; 0: automatic
   double EmissionWeight = 0.0; ///< k_e >= 0: emitted radiance k_e c
 
   // Ambient occlusion (section 7).
-  double OcclusionRadius = 0.0; ///< R in world units; 0: the ambient radius
-  int NumberOfDirections = 32;  ///< K >= 14
-  double AmbientWeight = 1.0;   ///< k_amb
+  double OcclusionRadius = 0.0;   ///< R in world units; 0: the ambient radius
+  int NumberOfDirections = 32;    ///< K >= 14
+  double AmbientWeight = 1.0;     ///< k_amb
   double DirectLightWeight = 0.0; ///< optional unshadowed direct light in the AO renderer
 
   // Ray casting.

@@ -48,7 +48,7 @@ class Writer
 {
 public:
   std::vector<unsigned char> Bytes;
-  template <typename T>
+  template<typename T>
   void Put(T v)
   {
     static_assert(std::is_trivially_copyable<T>::value, "plain values only");
@@ -60,7 +60,7 @@ public:
     }
     this->Bytes.insert(this->Bytes.end(), b, b + sizeof(T));
   }
-  template <typename T>
+  template<typename T>
   void PutArray(const std::vector<T>& v)
   {
     for (const T& x : v)
@@ -79,7 +79,7 @@ public:
     , End(end)
   {
   }
-  template <typename T>
+  template<typename T>
   bool Get(T& v)
   {
     if (this->Pos + sizeof(T) > this->End)
@@ -96,7 +96,7 @@ public:
     this->Pos += sizeof(T);
     return true;
   }
-  template <typename T>
+  template<typename T>
   bool GetArray(std::vector<T>& v, std::size_t n)
   {
     v.resize(n);
@@ -195,7 +195,8 @@ double ScatteringTableAxes::AnisotropyCoordinate(double g) const
   {
     return 0.0;
   }
-  const double w = (g - this->AnisotropyMinimum) / (this->AnisotropyMaximum - this->AnisotropyMinimum);
+  const double w =
+    (g - this->AnisotropyMinimum) / (this->AnisotropyMaximum - this->AnisotropyMinimum);
   return std::clamp(w, 0.0, 1.0) * (this->NumberOfAnisotropy - 1);
 }
 
@@ -217,8 +218,8 @@ std::string ScatteringTableAxes::Validate() const
   }
   else if (this->NumberOfAnisotropy < 1 || this->NumberOfAnisotropy > MaximumAxisSize)
   {
-    os << "anisotropy axis size " << this->NumberOfAnisotropy << " outside [1, "
-       << MaximumAxisSize << "]";
+    os << "anisotropy axis size " << this->NumberOfAnisotropy << " outside [1, " << MaximumAxisSize
+       << "]";
   }
   else if (this->NumberOfAlbedo < 2 || this->NumberOfAlbedo > MaximumAxisSize)
   {
@@ -402,8 +403,9 @@ ScatteringSlice ScatteringTable::Slice(double g, double albedo) const
 
 namespace
 {
-double MaximumRelativeError(
-  const std::vector<float>& value, const std::vector<float>& error, double threshold)
+double MaximumRelativeError(const std::vector<float>& value,
+  const std::vector<float>& error,
+  double threshold)
 {
   double peak = 0.0;
   for (float v : value)
@@ -500,7 +502,8 @@ bool ScatteringTable::Write(const std::string& fileName, std::string* error) con
     SetError(error, "cannot open '" + fileName + "' for writing");
     return false;
   }
-  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  out.write(
+    reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
   out.close();
   if (!out)
   {

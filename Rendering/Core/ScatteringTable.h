@@ -55,8 +55,8 @@ public:
   ScatteringTableAxes Axes;
   double Anisotropy = 0.0;
   double Albedo = 0.0;
-  std::vector<float> A;        ///< nTheta x nTau, theta fastest
-  std::vector<float> LogGain;  ///< nTau: log(F(tau) * exp(2 tau))
+  std::vector<float> A;       ///< nTheta x nTau, theta fastest
+  std::vector<float> LogGain; ///< nTau: log(F(tau) * exp(2 tau))
 
   /// A(theta; tau) for the slice's g and albedo. theta in radians, tau = r * averaged sigma_t.
   double InScattering(double theta, double tau) const;

@@ -62,9 +62,8 @@ double SummedAreaTable::BoxSum(std::array<int, 3> lo, std::array<int, 3> hi) con
   // Exclusive upper corner (hi + 1) and lower corner lo in table coordinates.
   const int x0 = lo[0], y0 = lo[1], z0 = lo[2];
   const int x1 = hi[0] + 1, y1 = hi[1] + 1, z1 = hi[2] + 1;
-  return this->At(x1, y1, z1) - this->At(x0, y1, z1) - this->At(x1, y0, z1) -
-    this->At(x1, y1, z0) + this->At(x0, y0, z1) + this->At(x0, y1, z0) + this->At(x1, y0, z0) -
-    this->At(x0, y0, z0);
+  return this->At(x1, y1, z1) - this->At(x0, y1, z1) - this->At(x1, y0, z1) - this->At(x1, y1, z0) +
+    this->At(x0, y0, z1) + this->At(x0, y1, z0) + this->At(x1, y0, z0) - this->At(x0, y0, z0);
 }
 
 } // namespace avs

@@ -29,7 +29,8 @@ public:
 private:
   double At(int i, int j, int k) const
   {
-    return this->Table[(static_cast<std::size_t>(k) * (this->Dims[1] + 1) + j) * (this->Dims[0] + 1) + i];
+    return this
+      ->Table[(static_cast<std::size_t>(k) * (this->Dims[1] + 1) + j) * (this->Dims[0] + 1) + i];
   }
   std::array<int, 3> Dims;
   std::vector<double> Table;

@@ -54,8 +54,11 @@ double TransferFunction::OpacityAt(double s) const
   return a + (b - a) * f;
 }
 
-TransferFunction TransferFunction::Ramp(
-  double lo, double hi, double alpha, const Vec3& color, int samples)
+TransferFunction TransferFunction::Ramp(double lo,
+  double hi,
+  double alpha,
+  const Vec3& color,
+  int samples)
 {
   TransferFunction tf;
   tf.Minimum = lo;
@@ -63,8 +66,8 @@ TransferFunction TransferFunction::Ramp(
   for (int i = 0; i < samples; ++i)
   {
     tf.Opacity.push_back(static_cast<float>(alpha * i / (samples - 1.0)));
-    tf.Color.push_back({ static_cast<float>(color.x), static_cast<float>(color.y),
-      static_cast<float>(color.z) });
+    tf.Color.push_back(
+      { static_cast<float>(color.x), static_cast<float>(color.y), static_cast<float>(color.z) });
   }
   return tf;
 }
@@ -73,8 +76,9 @@ TransferFunction TransferFunction::Constant(double alpha, const Vec3& color)
 {
   TransferFunction tf;
   tf.Opacity = { static_cast<float>(alpha), static_cast<float>(alpha) };
-  const std::array<float, 3> c{ static_cast<float>(color.x), static_cast<float>(color.y),
-    static_cast<float>(color.z) };
+  const std::array<float, 3> c{
+    static_cast<float>(color.x), static_cast<float>(color.y), static_cast<float>(color.z)
+  };
   tf.Color = { c, c };
   return tf;
 }

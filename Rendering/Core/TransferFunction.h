@@ -22,7 +22,11 @@ struct TransferFunction
   double OpacityAt(double s) const;
 
   /// A ramp from (0 at lo) to (alpha at hi) with a constant colour: handy for tests.
-  static TransferFunction Ramp(double lo, double hi, double alpha, const Vec3& color, int samples = 256);
+  static TransferFunction Ramp(double lo,
+    double hi,
+    double alpha,
+    const Vec3& color,
+    int samples = 256);
   /// Constant opacity and colour.
   static TransferFunction Constant(double alpha, const Vec3& color);
 };

@@ -38,7 +38,7 @@ public:
   {                                                                                                \
     if (!(condition))                                                                              \
     {                                                                                              \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #condition << std::endl;     \
+      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #condition << std::endl;      \
       ++failures;                                                                                  \
     }                                                                                              \
   } while (0)

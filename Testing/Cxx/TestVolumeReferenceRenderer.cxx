@@ -36,7 +36,8 @@ vtkSmartPointer<vtkImageData> Ball()
     for (int j = 0; j < 24; ++j)
       for (int i = 0; i < 24; ++i)
       {
-        const double r = std::sqrt((i - 11.5) * (i - 11.5) + (j - 11.5) * (j - 11.5) + (k - 11.5) * (k - 11.5));
+        const double r =
+          std::sqrt((i - 11.5) * (i - 11.5) + (j - 11.5) * (j - 11.5) + (k - 11.5) * (k - 11.5));
         s->SetValue((k * 24 + j) * 24 + i, static_cast<short>(r < 8 ? 100 : 0));
       }
   image->GetPointData()->SetScalars(s);
@@ -104,6 +105,23 @@ int main(int, char*[])
     AVS_CHECK(out->GetScalarComponentAsDouble(0, 0, 0, 0) == 0.0);
     AVS_CHECK(out->GetScalarComponentAsDouble(16, 12, 0, 0) > 0.0);
   }
+  // The extent's lower corner places the volume: the same ball with extent starting at -12 and
+  // the origin moved back by 12 voxels renders the same picture.
+  {
+    filter->SetRenderModeToEmissionAbsorption();
+    filter->SetInputData(Ball());
+    filter->Update();
+    vtkNew<vtkImageData> first;
+    first->DeepCopy(filter->GetOutput());
+    auto shifted = Ball();
+    shifted->SetExtent(-12, 11, -12, 11, -12, 11);
+    shifted->SetOrigin(-5.75 + 6.0, -5.75 + 6.0, -5.75 + 6.0);
+    filter->SetInputData(shifted);
+    filter->Update();
+    AVS_CHECK(PixelSum(filter->GetOutput()) > 0.0);
+    AVS_CHECK(std::abs(PixelSum(filter->GetOutput()) - PixelSum(first)) < 1e-9);
+    filter->SetInputData(Ball());
+  }
   // The light matters for ambient scattering: switching it off (a headlight is used instead
   // only when the renderer has no lights at all) darkens the picture.
   filter->SetRenderModeToAmbientScattering();
@@ -113,7 +131,8 @@ int main(int, char*[])
   light->SwitchOn();
 
   // Bad input: each gives an error and an empty output, and no crash.
-  auto expectError = [&](vtkImageData* input, const std::string& text) {
+  auto expectError = [&](vtkImageData* input, const std::string& text)
+  {
     errors->Clear();
     filter->SetInputData(input);
     filter->Update();
@@ -174,9 +193,19 @@ int main(int, char*[])
 
   std::ostringstream os;
   filter->Print(os);
-  for (const char* key : { "RenderMode", "Albedo", "Anisotropy", "AmbientRadius", "EmissionWeight",
-         "OcclusionRadius", "NumberOfDirections", "AmbientWeight", "SampleDistance",
-         "TerminationTransmittance", "LightVolumeMaximumDimension", "ImageSize", "Background" })
+  for (const char* key : { "RenderMode",
+         "Albedo",
+         "Anisotropy",
+         "AmbientRadius",
+         "EmissionWeight",
+         "OcclusionRadius",
+         "NumberOfDirections",
+         "AmbientWeight",
+         "SampleDistance",
+         "TerminationTransmittance",
+         "LightVolumeMaximumDimension",
+         "ImageSize",
+         "Background" })
   {
     AVS_CHECK(os.str().find(key) != std::string::npos);
   }

@@ -24,7 +24,9 @@ GridGeometry Geometry(int nx, int ny, int nz, Vec3 spacing = { 1, 1, 1 })
 Grid Shell(const GridGeometry& g, double radiusFraction = 0.35, double value = 3.0)
 {
   Grid grid(g);
-  const Vec3 c{ 0.5 * (g.Dimensions[0] - 1), 0.5 * (g.Dimensions[1] - 1), 0.5 * (g.Dimensions[2] - 1) };
+  const Vec3 c{
+    0.5 * (g.Dimensions[0] - 1), 0.5 * (g.Dimensions[1] - 1), 0.5 * (g.Dimensions[2] - 1)
+  };
   const double r = radiusFraction * std::min({ g.Dimensions[0], g.Dimensions[1], g.Dimensions[2] });
   for (int k = 0; k < g.Dimensions[2]; ++k)
     for (int j = 0; j < g.Dimensions[1]; ++j)
@@ -81,11 +83,12 @@ TEST(SummedAreaTable, BoxSumsEqualBruteForceOnRandomBoxesTouchingEveryBorder)
       const int x = static_cast<int>(rng.Uniform() * n[a]);
       const int y = static_cast<int>(rng.Uniform() * n[a]);
       lo[a] = kind == 0 ? 0 : (kind == 1 ? std::min(x, y) : (kind == 2 ? 0 : -3));
-      hi[a] = kind == 0 ? std::max(x, y) : (kind == 1 ? n[a] - 1 : (kind == 2 ? n[a] - 1 : n[a] + 2));
+      hi[a] =
+        kind == 0 ? std::max(x, y) : (kind == 1 ? n[a] - 1 : (kind == 2 ? n[a] - 1 : n[a] + 2));
     }
     ExpectRelative(sat.BoxSum(lo, hi), BruteBoxSum(shell, lo, hi), 1e-12, "box sum");
   }
-  EXPECT_EQ(sat.BoxSum({ 5, 5, 5 }, { 4, 9, 9 }), 0.0); // empty box
+  EXPECT_EQ(sat.BoxSum({ 5, 5, 5 }, { 4, 9, 9 }), 0.0);     // empty box
   EXPECT_EQ(sat.BoxSum({ -9, -9, -9 }, { -1, 3, 3 }), 0.0); // entirely outside
 }
 
@@ -209,7 +212,8 @@ TEST(AveragedExtinction, PrecisionAt256CubedOnConstantAndShellFields)
       else
       {
         // Points near the shell, where the mean is non-trivial.
-        const Vec3 dir = Normalize(Vec3{ rng.Uniform() - 0.5, rng.Uniform() - 0.5, rng.Uniform() - 0.5 });
+        const Vec3 dir =
+          Normalize(Vec3{ rng.Uniform() - 0.5, rng.Uniform() - 0.5, rng.Uniform() - 0.5 });
         const double r = 0.4 * n + (rng.Uniform() - 0.5) * 12.0;
         i = std::clamp(static_cast<int>(127.5 + dir.x * r), 0, n - 1);
         j = std::clamp(static_cast<int>(127.5 + dir.y * r), 0, n - 1);

@@ -43,7 +43,8 @@ Grid ShellExtinction(const GridGeometry& g, double sigma)
       for (int i = 0; i < g.Dimensions[0]; ++i)
       {
         const double d = Length(Vec3{ i - c, j - c, k - c });
-        grid.At(i, j, k) = std::abs(d - 0.3 * g.Dimensions[0]) < 1.5 ? static_cast<float>(sigma) : 0.0f;
+        grid.At(i, j, k) =
+          std::abs(d - 0.3 * g.Dimensions[0]) < 1.5 ? static_cast<float>(sigma) : 0.0f;
       }
   return grid;
 }
@@ -99,7 +100,8 @@ TEST(LightVolume, EmptyVolumeLetsEverythingThrough)
   const Grid empty(g, 0.0f);
   const ScatteringSlice slice = Shipped().Slice(0.3, 0.8);
   for (const Light& light : { Light::Directional({ 0.3, -1, 0.2 }, { 1, 1, 1 }),
-         Light::Point({ 5, 6, 4 }, { 1, 1, 1 }), Light::Point({ -40, 3, 2 }, { 1, 1, 1 }) })
+         Light::Point({ 5, 6, 4 }, { 1, 1, 1 }),
+         Light::Point({ -40, 3, 2 }, { 1, 1, 1 }) })
   {
     const Grid lv = ComputeLightVolume(empty, g, light, slice, 0.7);
     for (float v : lv.Values)
@@ -122,7 +124,8 @@ TEST(LightVolume, SlabOccluderCastsTheExpectedShadow)
         ext.At(i, j, k) = static_cast<float>(sigma);
   const Grid averaged = AverageExtinction(ext, r);
   const ScatteringSlice slice = Shipped().Slice(0.0, 0.0);
-  const Grid lv = ComputeLightVolume(averaged, g, Light::Directional({ 0, 0, 1 }, { 1, 1, 1 }), slice, r);
+  const Grid lv =
+    ComputeLightVolume(averaged, g, Light::Directional({ 0, 0, 1 }, { 1, 1, 1 }), slice, r);
   // In front of the slab: lit. Behind it: attenuated by the slab's optical depth (6 voxels
   // of sigma; the averaging keeps the integral through the slab). Beside it: lit.
   EXPECT_NEAR(lv.At(16, 16, 4), 1.0, 1e-6);
@@ -155,7 +158,8 @@ TEST(LightVolume, PointLightInsideAndOutsideTheBox)
   // Outside, far away along -z: the same as a directional light along +z.
   const Light far = Light::Point({ 11.5, 11.5, -1.0e5 }, { 1, 1, 1 });
   const Grid lf = ComputeLightVolume(averaged, g, far, slice, 1.0);
-  const Grid ld = ComputeLightVolume(averaged, g, Light::Directional({ 0, 0, 1 }, { 1, 1, 1 }), slice, 1.0);
+  const Grid ld =
+    ComputeLightVolume(averaged, g, Light::Directional({ 0, 0, 1 }, { 1, 1, 1 }), slice, 1.0);
   for (int k = 0; k < 24; k += 4)
     for (int j = 4; j < 20; j += 3)
       for (int i = 4; i < 20; i += 3)

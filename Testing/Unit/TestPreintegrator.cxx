@@ -113,7 +113,11 @@ TEST(Preintegrator, ShippedTableAgreesWithAFreshLowCountRun)
       for (int i = 0; i < shipped.Axes.NumberOfTheta; ++i)
       {
         const std::size_t e = shipped.AIndex(i, j, k, l);
-        ExpectAgree(shipped.A[e], shipped.AError[e], fresh.A[e], fresh.AError[e], 5.0,
+        ExpectAgree(shipped.A[e],
+          shipped.AError[e],
+          fresh.A[e],
+          fresh.AError[e],
+          5.0,
           "A cell " + std::to_string(j) + "," + std::to_string(k));
       }
       const std::size_t f = shipped.FIndex(j, k, l);

@@ -49,7 +49,10 @@ Camera LookingDownZ(const Vec3& at, double from)
   return c;
 }
 
-Image Render(const VolumeScene& scene, ScatteringParameters p, RenderMode mode, const Camera& camera,
+Image Render(const VolumeScene& scene,
+  ScatteringParameters p,
+  RenderMode mode,
+  const Camera& camera,
   int size = 8)
 {
   const ScatteringParameters resolved = p.Resolve(scene.Scalars.Geometry);
@@ -67,7 +70,8 @@ TEST(ReferenceRenderer, HomogeneousSlabUnderEmissionAbsorption)
   const VolumeScene scene = Slab(alpha, u, depth, color);
   ScatteringParameters p;
   p.TerminationTransmittance = 0.0;
-  const Image image = Render(scene, p, RenderMode::EmissionAbsorption, LookingDownZ({ 5, 5, 0 }, 20));
+  const Image image =
+    Render(scene, p, RenderMode::EmissionAbsorption, LookingDownZ({ 5, 5, 0 }, 20));
   const double sigma = OpacityToExtinction(alpha, u);
   const double expected = 1.0 - std::exp(-sigma * depth);
   for (int y = 0; y < image.Height; ++y)
@@ -122,7 +126,8 @@ TEST(ReferenceRenderer, AmbientScatteringWithoutAlbedoOrEmissionIsBlack)
   ScatteringParameters p;
   p.Albedo = 0.0;
   p.EmissionWeight = 0.0;
-  const Image black = Render(scene, p, RenderMode::AmbientScattering, LookingDownZ({ 5, 5, 5 }, 20));
+  const Image black =
+    Render(scene, p, RenderMode::AmbientScattering, LookingDownZ({ 5, 5, 5 }, 20));
   for (int y = 0; y < black.Height; ++y)
     for (int x = 0; x < black.Width; ++x)
     {
@@ -193,7 +198,8 @@ TEST(ReferenceRenderer, DirectionMatrixTurnsTheVolumeWithTheCamera)
   camera.ViewAngle = 25;
   VolumeScene turned = scene;
   turned.Scalars.Geometry.Direction = { 0, -1, 0, 1, 0, 0, 0, 0, 1 };
-  auto rotate = [&](const Vec3& v) {
+  auto rotate = [&](const Vec3& v)
+  {
     const Vec3 d = v - g.Origin;
     return g.Origin + Vec3{ -d.y, d.x, d.z };
   };
@@ -222,11 +228,19 @@ TEST(ReferenceRenderer, PrecomputeRejectsAVolumeWithoutScalars)
   VolumeScene scene;
   PrecomputedVolumes volumes;
   std::string error;
-  EXPECT_FALSE(Precompute(scene, ScatteringParameters().Resolve(scene.Scalars.Geometry), &Shipped(),
-    RenderMode::EmissionAbsorption, volumes, &error));
+  EXPECT_FALSE(Precompute(scene,
+    ScatteringParameters().Resolve(scene.Scalars.Geometry),
+    &Shipped(),
+    RenderMode::EmissionAbsorption,
+    volumes,
+    &error));
   EXPECT_NE(error.find("no scalars"), std::string::npos);
   VolumeScene slab = Slab(0.5, 1.0, 5.0, { 1, 1, 1 });
-  EXPECT_FALSE(Precompute(slab, ScatteringParameters().Resolve(slab.Scalars.Geometry), nullptr,
-    RenderMode::AmbientScattering, volumes, &error));
+  EXPECT_FALSE(Precompute(slab,
+    ScatteringParameters().Resolve(slab.Scalars.Geometry),
+    nullptr,
+    RenderMode::AmbientScattering,
+    volumes,
+    &error));
   EXPECT_NE(error.find("table"), std::string::npos);
 }

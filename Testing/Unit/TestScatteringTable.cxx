@@ -34,7 +34,8 @@ std::string TempFile(const char* name)
 void WriteBytes(const std::string& path, const std::vector<unsigned char>& bytes)
 {
   std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  out.write(
+    reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
 }
 
 ScatteringTable SmallTable()
@@ -68,12 +69,14 @@ TEST(ScatteringTable, ShippedTableHasTheResolutionAlgorithmMdAsksFor)
   EXPECT_GE(ax.TauMaximum, 32.0);
   EXPECT_LE(ax.AnisotropyMinimum, -0.95);
   EXPECT_GE(ax.AnisotropyMaximum, 0.95);
-  EXPECT_LE((ax.AnisotropyMaximum - ax.AnisotropyMinimum) / (ax.NumberOfAnisotropy - 1), 0.1 + 1e-12);
+  EXPECT_LE(
+    (ax.AnisotropyMaximum - ax.AnisotropyMinimum) / (ax.NumberOfAnisotropy - 1), 0.1 + 1e-12);
   EXPECT_GE(ax.NumberOfAlbedo, 8);
   EXPECT_EQ(ax.Theta(0), 0.0);
   EXPECT_NEAR(ax.Theta(ax.NumberOfTheta - 1), Pi, 1e-12);
   // Denser near theta = 0 than near pi.
-  EXPECT_LT(ax.Theta(1) - ax.Theta(0), ax.Theta(ax.NumberOfTheta - 1) - ax.Theta(ax.NumberOfTheta - 2));
+  EXPECT_LT(
+    ax.Theta(1) - ax.Theta(0), ax.Theta(ax.NumberOfTheta - 1) - ax.Theta(ax.NumberOfTheta - 2));
   EXPECT_EQ(ax.Tau(0), 0.0);
   EXPECT_NEAR(ax.Tau(ax.NumberOfTau - 1), ax.TauMaximum, 1e-9);
 }
@@ -86,9 +89,11 @@ TEST(ScatteringTable, ThinBallGivesSingleScatteringAtTheNodes)
     for (int l = 0; l < ax.NumberOfAlbedo; ++l)
       for (int i = 0; i < ax.NumberOfTheta; ++i)
       {
-        const double expected = ax.Albedo(l) * HenyeyGreenstein(std::cos(ax.Theta(i)), ax.Anisotropy(k));
+        const double expected =
+          ax.Albedo(l) * HenyeyGreenstein(std::cos(ax.Theta(i)), ax.Anisotropy(k));
         EXPECT_NEAR(t.A[t.AIndex(i, 0, k, l)], expected, 1e-6 * (1 + expected));
-        EXPECT_NEAR(t.InScattering(ax.Theta(i), 0.0, ax.Anisotropy(k), ax.Albedo(l)), expected,
+        EXPECT_NEAR(t.InScattering(ax.Theta(i), 0.0, ax.Anisotropy(k), ax.Albedo(l)),
+          expected,
           1e-5 * (1 + expected));
       }
   // Between theta nodes the interpolation stays close to the phase function.
@@ -108,7 +113,8 @@ TEST(ScatteringTable, ForwardTransportLimits)
     for (double tau : { 0.01, 0.37, 1.0, 4.2, 17.0, 31.0 })
     {
       // Albedo 0: only the direct beam crosses the ball, exactly, also between nodes.
-      EXPECT_NEAR(t.ForwardTransport(tau, g, 0.0), std::exp(-2.0 * tau), 1e-6 * std::exp(-2.0 * tau))
+      EXPECT_NEAR(
+        t.ForwardTransport(tau, g, 0.0), std::exp(-2.0 * tau), 1e-6 * std::exp(-2.0 * tau))
         << "tau " << tau;
     }
   }
@@ -128,8 +134,8 @@ TEST(ScatteringTable, ForwardTransportIsMonotone)
         // Non-increasing in tau, within the Monte-Carlo errors.
         const std::size_t a = t.FIndex(j - 1, k, l), b = t.FIndex(j, k, l);
         const double slack = 4.0 * std::hypot(t.FError[a], t.FError[b]) + 1e-7;
-        EXPECT_LE(t.F[b], t.F[a] + slack) << "g " << ax.Anisotropy(k) << " albedo " << ax.Albedo(l)
-                                          << " tau " << ax.Tau(j);
+        EXPECT_LE(t.F[b], t.F[a] + slack)
+          << "g " << ax.Anisotropy(k) << " albedo " << ax.Albedo(l) << " tau " << ax.Tau(j);
         // Non-decreasing in the albedo: exact, every albedo shares the same paths.
         if (l > 0)
         {
@@ -199,7 +205,8 @@ TEST(ScatteringTable, LoaderRejectsBrokenFiles)
   const std::vector<unsigned char> bytes = good.Serialize();
   ScatteringTable t;
   std::string error;
-  auto rejects = [&](const std::vector<unsigned char>& b, const std::string& expected) {
+  auto rejects = [&](const std::vector<unsigned char>& b, const std::string& expected)
+  {
     error.clear();
     const bool ok = t.ReadFromMemory(b, &error);
     EXPECT_FALSE(ok);

@@ -1,0 +1,467 @@
+#include "vtkAVSRayCaster.h"
+
+#include "vtkAVSShaders.h"
+
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+// Splits an effect file into its declarations and its per-sample code.
+void SplitEffect(const std::string& text, std::string& dec, std::string& sample)
+{
+  const std::string marker = "//AVS::Effect::Sample";
+  const std::size_t at = text.find(marker);
+  dec = text.substr(0, at);
+  sample = at == std::string::npos ? std::string() : text.substr(at + marker.size());
+}
+
+void Replace(std::string& s, const std::string& what, const std::string& with)
+{
+  const std::size_t at = s.find(what);
+  if (at != std::string::npos)
+  {
+    s.replace(at, what.size(), with);
+  }
+}
+
+void ConfigureSampling(vtkTextureObject* t)
+{
+  t->SetWrapS(vtkTextureObject::ClampToEdge);
+  t->SetWrapT(vtkTextureObject::ClampToEdge);
+  t->SetWrapR(vtkTextureObject::ClampToEdge);
+  t->SetMinificationFilter(vtkTextureObject::Linear);
+  t->SetMagnificationFilter(vtkTextureObject::Linear);
+}
+} // namespace
+
+vtkAVSRayCaster::vtkAVSRayCaster() = default;
+
+vtkAVSRayCaster::~vtkAVSRayCaster()
+{
+  this->ReleaseGraphicsResources(this->Window);
+}
+
+void vtkAVSRayCaster::SetWindow(vtkOpenGLRenderWindow* window)
+{
+  if (window != this->Window)
+  {
+    this->ReleaseGraphicsResources(this->Window);
+    this->Window = window;
+  }
+}
+
+void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
+{
+  for (vtkTextureObject* t : { this->Scalars.Get(),
+         this->Transfer.Get(),
+         this->Averaged.Get(),
+         this->Occlusion.Get(),
+         this->Table.Get(),
+         this->Depth.Get(),
+         this->LightVolumes[0].Get(),
+         this->LightVolumes[1].Get() })
+  {
+    if (t && window)
+    {
+      t->ReleaseGraphicsResources(window);
+    }
+  }
+  this->Scalars = this->Transfer = this->Averaged = this->Occlusion = this->Table = this->Depth =
+    nullptr;
+  this->LightVolumes[0] = this->LightVolumes[1] = nullptr;
+  if (this->Quad && window)
+  {
+    this->Quad->ReleaseGraphicsResources(window);
+  }
+  this->Quad.reset();
+  this->QuadMode = -1;
+  if (window == this->Window)
+  {
+    this->Window = nullptr;
+  }
+}
+
+int vtkAVSRayCaster::MaximumTextureSize3D() const
+{
+  if (!this->Window)
+  {
+    return 0;
+  }
+  GLint size = 0;
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &size);
+  return size;
+}
+
+bool vtkAVSRayCaster::UploadScalarGrid(vtkSmartPointer<vtkTextureObject>& texture,
+  const avs::Grid& grid,
+  int components,
+  const float* data,
+  std::string& error)
+{
+  const auto& d = grid.Geometry.Dimensions;
+  const int limit = this->MaximumTextureSize3D();
+  if (d[0] > limit || d[1] > limit || d[2] > limit)
+  {
+    error = "the volume (" + std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " +
+      std::to_string(d[2]) +
+      ") is too large for the GPU (largest 3D texture: " + std::to_string(limit) + " per axis)";
+    return false;
+  }
+  if (texture)
+  {
+    texture->ReleaseGraphicsResources(this->Window);
+  }
+  texture = vtkSmartPointer<vtkTextureObject>::New();
+  texture->SetContext(this->Window);
+  ConfigureSampling(texture);
+  // Rows of floats are not padded.
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  if (!texture->Create3DFromRaw(static_cast<unsigned int>(d[0]),
+        static_cast<unsigned int>(d[1]),
+        static_cast<unsigned int>(d[2]),
+        components,
+        VTK_FLOAT,
+        const_cast<float*>(data)))
+  {
+    error = "the GPU could not allocate a " + std::to_string(d[0]) + " x " + std::to_string(d[1]) +
+      " x " + std::to_string(d[2]) + " texture (out of GPU memory?)";
+    texture = nullptr;
+    return false;
+  }
+  if (glGetError() != GL_NO_ERROR)
+  {
+    error = "the GPU refused a 3D texture of " + std::to_string(d[0]) + " x " +
+      std::to_string(d[1]) + " x " + std::to_string(d[2]) + " (out of GPU memory?)";
+    texture->ReleaseGraphicsResources(this->Window);
+    texture = nullptr;
+    return false;
+  }
+  return true;
+}
+
+bool vtkAVSRayCaster::UploadScalars(const avs::Grid& scalars, std::string& error)
+{
+  return this->UploadScalarGrid(this->Scalars, scalars, 1, scalars.Values.data(), error);
+}
+
+bool vtkAVSRayCaster::UploadAveragedExtinction(const avs::Grid& averaged, std::string& error)
+{
+  return this->UploadScalarGrid(this->Averaged, averaged, 1, averaged.Values.data(), error);
+}
+
+bool vtkAVSRayCaster::UploadOcclusion(const avs::Grid& occlusion, std::string& error)
+{
+  return this->UploadScalarGrid(this->Occlusion, occlusion, 1, occlusion.Values.data(), error);
+}
+
+bool vtkAVSRayCaster::UploadLightVolumes(const std::vector<avs::Grid>& volumes, std::string& error)
+{
+  if (volumes.empty())
+  {
+    avs::GridGeometry g;
+    g.Dimensions = { 2, 2, 2 };
+    const avs::Grid one(g, 1.0f);
+    return this->UploadLightVolumes({ one }, error);
+  }
+  const avs::Grid& first = volumes.front();
+  const std::size_t n = first.Values.size();
+  for (int t = 0; t < 2; ++t)
+  {
+    std::vector<float> packed(4 * n, 1.0f);
+    for (int c = 0; c < 4; ++c)
+    {
+      const std::size_t j = static_cast<std::size_t>(4 * t + c);
+      if (j < volumes.size())
+      {
+        for (std::size_t i = 0; i < n; ++i)
+        {
+          packed[4 * i + c] = volumes[j].Values[i];
+        }
+      }
+    }
+    if (!this->UploadScalarGrid(this->LightVolumes[t], first, 4, packed.data(), error))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool vtkAVSRayCaster::UploadTransferFunction(const avs::TransferFunction& tf, std::string& error)
+{
+  const std::size_t n = std::min(tf.Color.size(), tf.Opacity.size());
+  std::vector<float> rgba(4 * n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    rgba[4 * i] = tf.Color[i][0];
+    rgba[4 * i + 1] = tf.Color[i][1];
+    rgba[4 * i + 2] = tf.Color[i][2];
+    rgba[4 * i + 3] = tf.Opacity[i];
+  }
+  if (this->Transfer)
+  {
+    this->Transfer->ReleaseGraphicsResources(this->Window);
+  }
+  this->Transfer = vtkSmartPointer<vtkTextureObject>::New();
+  this->Transfer->SetContext(this->Window);
+  ConfigureSampling(this->Transfer);
+  if (!this->Transfer->Create1DFromRaw(static_cast<unsigned int>(n), 4, VTK_FLOAT, rgba.data()))
+  {
+    error = "the GPU could not allocate the transfer-function texture";
+    this->Transfer = nullptr;
+    return false;
+  }
+  this->TransferSize = static_cast<float>(n);
+  this->ScalarRange[0] = static_cast<float>(tf.Minimum);
+  this->ScalarRange[1] = static_cast<float>(tf.Maximum > tf.Minimum ? tf.Maximum : tf.Minimum + 1);
+  return true;
+}
+
+bool vtkAVSRayCaster::UploadTableSlice(const avs::ScatteringSlice& slice, std::string& error)
+{
+  if (this->Table)
+  {
+    this->Table->ReleaseGraphicsResources(this->Window);
+  }
+  this->Table = vtkSmartPointer<vtkTextureObject>::New();
+  this->Table->SetContext(this->Window);
+  ConfigureSampling(this->Table);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  if (!this->Table->Create2DFromRaw(static_cast<unsigned int>(slice.Axes.NumberOfTheta),
+        static_cast<unsigned int>(slice.Axes.NumberOfTau),
+        1,
+        VTK_FLOAT,
+        const_cast<float*>(slice.A.data())))
+  {
+    error = "the GPU could not allocate the scattering-table texture";
+    this->Table = nullptr;
+    return false;
+  }
+  this->TableSize[0] = static_cast<float>(slice.Axes.NumberOfTheta);
+  this->TableSize[1] = static_cast<float>(slice.Axes.NumberOfTau);
+  this->TableTauMaximum = static_cast<float>(slice.Axes.TauMaximum);
+  return true;
+}
+
+bool vtkAVSRayCaster::EnsureProgram(avs::RenderMode mode)
+{
+  if (this->Quad && this->QuadMode == static_cast<int>(mode))
+  {
+    return true;
+  }
+  if (this->Quad)
+  {
+    this->Quad->ReleaseGraphicsResources(this->Window);
+    this->Quad.reset();
+  }
+  std::string fs = avs_raycast_fs;
+  std::string effect = mode == avs::RenderMode::EmissionAbsorption
+    ? avs_ea_effect
+    : (mode == avs::RenderMode::AmbientOcclusion ? avs_ao_effect : avs_as_effect);
+  std::string dec, sample;
+  SplitEffect(effect, dec, sample);
+  Replace(fs, "//AVS::Lights::Dec", avs_lights);
+  Replace(fs, "//AVS::Effect::Dec", dec);
+  Replace(fs, "//AVS::Effect::Sample", sample);
+  this->Quad = std::make_unique<vtkOpenGLQuadHelper>(this->Window, nullptr, fs.c_str(), "");
+  if (!this->Quad->Program || !this->Quad->Program->GetCompiled())
+  {
+    this->Quad.reset();
+    return false;
+  }
+  this->QuadMode = static_cast<int>(mode);
+  return true;
+}
+
+bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::string& error)
+{
+  vtkOpenGLRenderWindow* window = this->Window;
+  if (!window || !this->Scalars || !this->Transfer)
+  {
+    error = "nothing uploaded";
+    return false;
+  }
+  if (!this->EnsureProgram(frame.Mode))
+  {
+    error = "the ray-casting shader did not compile or link (see the log above)";
+    return false;
+  }
+  vtkOpenGLState* state = window->GetState();
+  int width, height, x, y;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+
+  // Copy the depth of what was drawn before, to end rays at opaque geometry.
+  if (!this->Depth || static_cast<int>(this->Depth->GetWidth()) != width ||
+    static_cast<int>(this->Depth->GetHeight()) != height)
+  {
+    if (this->Depth)
+    {
+      this->Depth->ReleaseGraphicsResources(window);
+    }
+    this->Depth = vtkSmartPointer<vtkTextureObject>::New();
+    this->Depth->SetContext(window);
+    this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
+    this->Depth->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->Depth->SetWrapT(vtkTextureObject::ClampToEdge);
+  }
+  this->Depth->Activate();
+  this->Depth->CopyFromFrameBuffer(x, y, 0, 0, width, height);
+
+  window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
+  vtkShaderProgram* program = this->Quad->Program;
+
+  // Matrices: NDC -> world from the camera, world -> index from the mapper.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double aspect = static_cast<double>(width) / std::max(1, height);
+  vtkNew<vtkMatrix4x4> ndcToWorld;
+  ndcToWorld->DeepCopy(camera->GetCompositeProjectionTransformMatrix(aspect, -1, 1));
+  ndcToWorld->Invert();
+  auto upload = [program](const char* name, vtkMatrix4x4* m)
+  {
+    float data[16];
+    for (int r = 0; r < 4; ++r)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        data[c * 4 + r] = static_cast<float>(m->GetElement(r, c)); // column-major for GLSL
+      }
+    }
+    program->SetUniformMatrix4x4(name, data);
+  };
+  // SetUniformMatrix4x4 sends the array as is (column-major), so GLSL sees M and M * v works.
+  upload("u_ndcToWorld", ndcToWorld);
+  upload("u_worldToIndex", frame.WorldToIndex);
+  const float dims[3] = { static_cast<float>(frame.Dimensions[0]),
+    static_cast<float>(frame.Dimensions[1]),
+    static_cast<float>(frame.Dimensions[2]) };
+  program->SetUniform3f("u_dimensions", dims);
+  program->SetUniformi("u_depth", this->Depth->GetTextureUnit());
+  this->Scalars->Activate();
+  program->SetUniformi("u_scalars", this->Scalars->GetTextureUnit());
+  this->Transfer->Activate();
+  program->SetUniformi("u_transfer", this->Transfer->GetTextureUnit());
+  const float range[2] = { this->ScalarRange[0], this->ScalarRange[1] };
+  program->SetUniform2f("u_scalarRange", range);
+  program->SetUniformf("u_transferSize", this->TransferSize);
+  program->SetUniformf("u_unitDistance", static_cast<float>(frame.UnitDistance));
+  const avs::ScatteringParameters& p = frame.Parameters;
+  program->SetUniformf("u_sampleDistance", static_cast<float>(p.SampleDistance));
+  program->SetUniformf("u_termination", static_cast<float>(p.TerminationTransmittance));
+  program->SetUniformi("u_jitter", frame.Jitter ? 1 : 0);
+
+  // Lights.
+  const int n = static_cast<int>(std::min<std::size_t>(frame.Lights.size(), MaximumNumberOfLights));
+  int positional[MaximumNumberOfLights] = {};
+  float position[MaximumNumberOfLights][3] = {}, axis[MaximumNumberOfLights][3] = {},
+        irradiance[MaximumNumberOfLights][3] = {}, attenuation[MaximumNumberOfLights][3] = {};
+  float coneCos[MaximumNumberOfLights] = {}, exponent[MaximumNumberOfLights] = {};
+  for (int j = 0; j < n; ++j)
+  {
+    const avs::Light& l = frame.Lights[j];
+    positional[j] = l.Type == avs::LightType::Positional ? 1 : 0;
+    const avs::Vec3 a = avs::Normalize(l.FocalPoint - l.Position);
+    for (int k = 0; k < 3; ++k)
+    {
+      position[j][k] = static_cast<float>(l.Position[k]);
+      axis[j][k] = static_cast<float>(a[k]);
+      irradiance[j][k] = static_cast<float>(l.Irradiance[k]);
+      attenuation[j][k] = static_cast<float>(l.Attenuation[k]);
+    }
+    coneCos[j] = l.IsSpot() ? static_cast<float>(std::cos(l.ConeAngle * avs::Pi / 180.0)) : -2.0f;
+    exponent[j] = static_cast<float>(l.Exponent);
+  }
+  program->SetUniformi("u_numberOfLights", n);
+  program->SetUniform1iv("u_lightPositional", MaximumNumberOfLights, positional);
+  program->SetUniform3fv("u_lightPosition", MaximumNumberOfLights, position);
+  program->SetUniform3fv("u_lightAxis", MaximumNumberOfLights, axis);
+  program->SetUniform3fv("u_lightIrradiance", MaximumNumberOfLights, irradiance);
+  program->SetUniform3fv("u_lightAttenuation", MaximumNumberOfLights, attenuation);
+  program->SetUniform1fv("u_lightConeCos", MaximumNumberOfLights, coneCos);
+  program->SetUniform1fv("u_lightExponent", MaximumNumberOfLights, exponent);
+
+  program->SetUniformf("u_albedo", static_cast<float>(p.Albedo));
+  program->SetUniformf("u_anisotropy", static_cast<float>(p.Anisotropy));
+  program->SetUniformf("u_emissionWeight", static_cast<float>(p.EmissionWeight));
+  if (frame.Mode == avs::RenderMode::AmbientOcclusion)
+  {
+    if (!this->Occlusion)
+    {
+      error = "no occlusion volume uploaded";
+      return false;
+    }
+    this->Occlusion->Activate();
+    program->SetUniformi("u_occlusion", this->Occlusion->GetTextureUnit());
+    program->SetUniformf("u_ambientWeight", static_cast<float>(p.AmbientWeight));
+    program->SetUniformf("u_directLightWeight", static_cast<float>(p.DirectLightWeight));
+  }
+  else if (frame.Mode == avs::RenderMode::AmbientScattering)
+  {
+    if (!this->Averaged || !this->Table || !this->LightVolumes[0] || !this->LightVolumes[1])
+    {
+      error = "the scattering volumes are not uploaded";
+      return false;
+    }
+    this->Averaged->Activate();
+    program->SetUniformi("u_averaged", this->Averaged->GetTextureUnit());
+    this->LightVolumes[0]->Activate();
+    program->SetUniformi("u_lightVolumes0", this->LightVolumes[0]->GetTextureUnit());
+    this->LightVolumes[1]->Activate();
+    program->SetUniformi("u_lightVolumes1", this->LightVolumes[1]->GetTextureUnit());
+    const float lvd[3] = { static_cast<float>(frame.LightVolumeDimensions[0]),
+      static_cast<float>(frame.LightVolumeDimensions[1]),
+      static_cast<float>(frame.LightVolumeDimensions[2]) };
+    program->SetUniform3f("u_lightVolumeDimensions", lvd);
+    this->Table->Activate();
+    program->SetUniformi("u_table", this->Table->GetTextureUnit());
+    program->SetUniform2f("u_tableSize", this->TableSize);
+    program->SetUniformf("u_tableTauMaximum", this->TableTauMaximum);
+    program->SetUniformf("u_ambientRadius", static_cast<float>(p.AmbientRadius));
+  }
+
+  // Composite the premultiplied result over the framebuffer; leave depth untouched.
+  {
+    vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglDepthMask depthMask(state);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
+    vtkOpenGLState::ScopedglViewport viewportGuard(state);
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDepthMask(GL_FALSE);
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    state->vtkglViewport(x, y, width, height);
+    this->Quad->Render();
+  }
+
+  for (vtkTextureObject* t : { this->Depth.Get(),
+         this->Scalars.Get(),
+         this->Transfer.Get(),
+         this->Occlusion.Get(),
+         this->Averaged.Get(),
+         this->LightVolumes[0].Get(),
+         this->LightVolumes[1].Get(),
+         this->Table.Get() })
+  {
+    if (t && t->GetTextureUnit() >= 0)
+    {
+      t->Deactivate();
+    }
+  }
+  vtkOpenGLCheckErrorMacro("failed after rendering the volume");
+  return true;
+}

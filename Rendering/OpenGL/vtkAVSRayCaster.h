@@ -1,0 +1,94 @@
+/**
+ * @class   vtkAVSRayCaster
+ * @brief   the GL resources and the ray-casting pass shared by the module's mappers (private)
+ *
+ * Holds the textures (scalars, transfer function, averaged extinction, light volumes, ambient
+ * occlusion, the scattering-table slice, the depth copy) and the full-screen ray-casting program
+ * of one render window, and draws the pass composited over what the renderer drew. The mappers
+ * decide what to upload and when; this class only talks to OpenGL.
+ */
+#ifndef vtkAVSRayCaster_h
+#define vtkAVSRayCaster_h
+
+#include "Grid.h"
+#include "Lights.h"
+#include "ScatteringParameters.h"
+#include "ScatteringTable.h"
+#include "TransferFunction.h"
+
+#include "vtkSmartPointer.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkMatrix4x4;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkRenderer;
+class vtkTextureObject;
+class vtkWindow;
+
+class vtkAVSRayCaster
+{
+public:
+  static constexpr int MaximumNumberOfLights = 8;
+
+  vtkAVSRayCaster();
+  ~vtkAVSRayCaster();
+  vtkAVSRayCaster(const vtkAVSRayCaster&) = delete;
+  vtkAVSRayCaster& operator=(const vtkAVSRayCaster&) = delete;
+
+  /// The window whose context holds the resources; a different window releases them first.
+  void SetWindow(vtkOpenGLRenderWindow* window);
+  vtkOpenGLRenderWindow* GetWindow() const { return this->Window; }
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+  /// Largest 3D texture size of the context (0 without a context).
+  int MaximumTextureSize3D() const;
+
+  /// Texture uploads; return false and say why in `error` when the GPU refuses.
+  bool UploadScalars(const avs::Grid& scalars, std::string& error);
+  bool UploadTransferFunction(const avs::TransferFunction& tf, std::string& error);
+  bool UploadAveragedExtinction(const avs::Grid& averaged, std::string& error);
+  /// Up to 8 light volumes on one grid, packed four to an RGBA texture.
+  bool UploadLightVolumes(const std::vector<avs::Grid>& volumes, std::string& error);
+  bool UploadOcclusion(const avs::Grid& occlusion, std::string& error);
+  bool UploadTableSlice(const avs::ScatteringSlice& slice, std::string& error);
+
+  struct Frame
+  {
+    avs::RenderMode Mode = avs::RenderMode::EmissionAbsorption;
+    avs::ScatteringParameters Parameters; ///< resolved
+    vtkMatrix4x4* WorldToIndex = nullptr; ///< row-major, VTK convention
+    std::array<int, 3> Dimensions{ 1, 1, 1 };
+    std::array<int, 3> LightVolumeDimensions{ 1, 1, 1 };
+    double UnitDistance = 1.0;
+    std::vector<avs::Light> Lights; ///< world space
+    bool Jitter = true;
+  };
+
+  /// Draws the volume into the renderer's viewport. Returns false (and draws nothing) when the
+  /// program cannot be built.
+  bool Render(vtkRenderer* renderer, const Frame& frame, std::string& error);
+
+private:
+  bool UploadScalarGrid(vtkSmartPointer<vtkTextureObject>& texture,
+    const avs::Grid& grid,
+    int components,
+    const float* data,
+    std::string& error);
+  bool EnsureProgram(avs::RenderMode mode);
+
+  vtkOpenGLRenderWindow* Window = nullptr;
+  vtkSmartPointer<vtkTextureObject> Scalars, Transfer, Averaged, Occlusion, Table, Depth;
+  vtkSmartPointer<vtkTextureObject> LightVolumes[2];
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  int QuadMode = -1;
+  float TransferSize = 1.0f;
+  float ScalarRange[2] = { 0.0f, 1.0f };
+  float TableSize[2] = { 1.0f, 1.0f };
+  float TableTauMaximum = 1.0f;
+};
+
+#endif

@@ -1,0 +1,27 @@
+//AVS::Effect::Dec
+// Volumetric ambient occlusion (ALGORITHM.md section 7): EA with the colour scaled by
+// k_amb AO(x) + k_e, plus optional unshadowed direct light.
+uniform sampler3D u_occlusion;
+uniform float u_ambientWeight;
+uniform float u_emissionWeight;
+uniform float u_directLightWeight;
+uniform float u_albedo;
+uniform float u_anisotropy;
+//AVS::Effect::Sample
+    {
+      float ao = texture(u_occlusion, (index + 0.5) / u_dimensions).r;
+      float weight = u_ambientWeight * ao + u_emissionWeight;
+      vec3 c = here.rgb * weight;
+      if (u_directLightWeight > 0.0 && here.a > 0.0)
+      {
+        vec3 world = origin + t * direction;
+        vec3 direct = vec3(0.0);
+        for (int j = 0; j < u_numberOfLights; ++j)
+        {
+          float mu = dot(LightPropagation(j, world), -direction);
+          direct += LightIrradiance(j, world) * (4.0 * PI * u_albedo * HenyeyGreenstein(mu, u_anisotropy));
+        }
+        c += here.rgb * direct * u_directLightWeight;
+      }
+      L += T * (1.0 - extinction) * c;
+    }

@@ -1,0 +1,115 @@
+//VTK::System::Dec
+// Ray casting framework of the three mappers (ALGORITHM.md sections 2, 6 and 7): one ray per
+// pixel from the inverse view-projection (camera inside the volume and parallel projection
+// included), clipped to the volume box and to the opaque geometry's depth, marched front to back
+// in equal steps, with the mapper's effect snippet (declarations and per-sample code) put in
+// at the two effect markers below. The CPU reference (Rendering/Core/ReferenceRenderer.cxx) computes the
+// same sums in double precision.
+
+//VTK::Output::Dec
+
+in vec2 texCoord; // position in the viewport, [0, 1]^2 (from the quad's vertex shader)
+
+uniform mat4 u_ndcToWorld;   // inverse of the camera's world -> NDC
+uniform mat4 u_worldToIndex; // world -> continuous voxel index of the data
+uniform sampler2D u_depth;   // depth of what the renderer drew before
+uniform sampler3D u_scalars; // point scalars, component 0
+uniform vec3 u_dimensions;   // voxels per axis
+uniform sampler1D u_transfer; // rgb colour, a opacity over u_scalarRange
+uniform vec2 u_scalarRange;
+uniform float u_transferSize;
+uniform float u_unitDistance;
+uniform float u_sampleDistance; // world units
+uniform float u_termination;    // stop when T falls below
+uniform int u_jitter;           // 1: jitter the first sample per pixel
+
+const float PI = 3.14159265358979;
+
+// Scalar at a continuous voxel index (texel centres sit on the voxels).
+float ScalarAt(vec3 index)
+{
+  return texture(u_scalars, (index + 0.5) / u_dimensions).r;
+}
+
+bool InsideVolume(vec3 index)
+{
+  return all(greaterThanEqual(index, vec3(-1e-4))) && all(lessThanEqual(index, u_dimensions - 1.0 + 1e-4));
+}
+
+// Colour and extinction of a scalar: sigma_t = -ln(1 - min(alpha, 1 - 1e-6)) / u.
+vec4 Classify(float s)
+{
+  float c = clamp((s - u_scalarRange.x) / (u_scalarRange.y - u_scalarRange.x), 0.0, 1.0);
+  vec4 rgba = texture(u_transfer, (c * (u_transferSize - 1.0) + 0.5) / u_transferSize);
+  float alpha = min(rgba.a, 1.0 - 1e-6);
+  return vec4(rgba.rgb, alpha > 0.0 ? -log(1.0 - alpha) / u_unitDistance : 0.0);
+}
+
+vec4 ClassifyAt(vec3 index)
+{
+  return InsideVolume(index) ? Classify(ScalarAt(index)) : vec4(0.0);
+}
+
+// Henyey-Greenstein, mu = cosine between the propagation directions of incoming and scattered
+// light (same convention as Rendering/Core/PhaseFunction.h).
+float HenyeyGreenstein(float mu, float g)
+{
+  float d = 1.0 + g * g - 2.0 * g * mu;
+  return (1.0 - g * g) / (4.0 * PI * d * sqrt(d));
+}
+
+//AVS::Lights::Dec
+
+//AVS::Effect::Dec
+
+float Hash(vec2 p)
+{
+  return fract(sin(dot(p, vec2(12.9898, 78.233))) * 43758.5453);
+}
+
+void main()
+{
+  vec2 ndc = texCoord * 2.0 - 1.0;
+  vec4 nearPoint = u_ndcToWorld * vec4(ndc, -1.0, 1.0);
+  vec4 farPoint = u_ndcToWorld * vec4(ndc, 1.0, 1.0);
+  vec3 origin = nearPoint.xyz / nearPoint.w;
+  vec3 direction = normalize(farPoint.xyz / farPoint.w - origin);
+
+  // The ray in index space: index(t) = io + t * id for world distance t.
+  vec3 io = (u_worldToIndex * vec4(origin, 1.0)).xyz;
+  vec3 id = (u_worldToIndex * vec4(direction, 0.0)).xyz;
+  vec3 lo = -io / id;
+  vec3 hi = (u_dimensions - 1.0 - io) / id;
+  vec3 tmin = min(lo, hi);
+  vec3 tmax = max(lo, hi);
+  float t0 = max(max(max(tmin.x, tmin.y), tmin.z), 0.0);
+  float t1 = min(min(tmax.x, tmax.y), tmax.z);
+
+  // Opaque geometry drawn before ends the ray.
+  float depth = texture(u_depth, texCoord).r;
+  if (depth < 1.0)
+  {
+    vec4 p = u_ndcToWorld * vec4(ndc, 2.0 * depth - 1.0, 1.0);
+    t1 = min(t1, dot(p.xyz / p.w - origin, direction));
+  }
+  if (!(t1 > t0))
+  {
+    discard;
+  }
+  int steps = max(1, int(ceil((t1 - t0) / u_sampleDistance - 1e-4)));
+  float dt = (t1 - t0) / float(steps);
+  float offset = u_jitter == 1 ? Hash(gl_FragCoord.xy) : 0.5;
+
+  vec3 L = vec3(0.0);
+  float T = 1.0;
+  for (int i = 0; i < steps && T >= u_termination; ++i)
+  {
+    float t = t0 + (float(i) + offset) * dt;
+    vec3 index = io + t * id;
+    vec4 here = Classify(ScalarAt(index));
+    float extinction = exp(-here.a * dt);
+    //AVS::Effect::Sample
+    T *= extinction;
+  }
+  gl_FragData[0] = vec4(L, 1.0 - T);
+}

@@ -1,0 +1,121 @@
+/**
+ * @class   vtkAVSVolumeMapper
+ * @brief   the GPU ray-casting machinery shared by the module's three volume mappers
+ *
+ * Abstract base of vtkEmissionAbsorptionVolumeMapper, vtkAmbientOcclusionVolumeMapper and
+ * vtkAmbientScatteringVolumeMapper. It renders vtkImageData (single-component point scalars of
+ * any type; origin, spacing, extent and direction matrix honoured; the vtkVolume's transform
+ * applied) with the vtkVolumeProperty's colour and scalar-opacity functions and unit distance,
+ * by a full-screen GPU ray caster that clips rays to the volume box and to the depth of opaque
+ * geometry drawn before, and composites its premultiplied result over the framebuffer as VTK's
+ * own mappers do. The camera may be inside the volume; perspective and parallel projections,
+ * window resizes and several render windows work.
+ *
+ * Precomputed volumes (averaged extinction, light volumes, ambient occlusion) are rebuilt only
+ * when their inputs change: a camera move only re-renders, a light move rebuilds that light's
+ * volume, a change of data, transfer function or medium parameters rebuilds what depends on it.
+ * The counters below say how often each happened.
+ *
+ * Bad input — no or empty image, no point scalars, more than one component, NaN or infinite
+ * values, bad spacing, a volume too large for the GPU — gives a vtkErrorMacro and draws nothing.
+ */
+#ifndef vtkAVSVolumeMapper_h
+#define vtkAVSVolumeMapper_h
+
+#include "vtkRenderingAmbientScatteringModule.h" // for export macro
+#include "vtkVolumeMapper.h"
+
+#include <memory> // for std::unique_ptr
+
+namespace avs
+{
+struct ScatteringParameters;
+class ScatteringTable;
+}
+
+class VTKRENDERINGAMBIENTSCATTERING_EXPORT vtkAVSVolumeMapper : public vtkVolumeMapper
+{
+public:
+  vtkTypeMacro(vtkAVSVolumeMapper, vtkVolumeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Ray-marching step in world units. Default 0: half the smallest voxel spacing.
+   */
+  vtkSetClampMacro(SampleDistance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(SampleDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Jitter the first sample of each ray against wood-grain artefacts. Default on.
+   */
+  vtkSetMacro(UseJittering, vtkTypeBool);
+  vtkGetMacro(UseJittering, vtkTypeBool);
+  vtkBooleanMacro(UseJittering, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Early ray termination: rays stop when their transmittance falls below this. Default 1/255.
+   */
+  vtkSetClampMacro(TerminationTransmittance, double, 0.0, 1.0);
+  vtkGetMacro(TerminationTransmittance, double);
+  ///@}
+
+  ///@{
+  /**
+   * How often the mapper converted and uploaded the input scalars, rebuilt the averaged
+   * extinction, rebuilt a light volume (one count per light), rebuilt the ambient-occlusion
+   * volume, and rendered a frame.
+   */
+  vtkGetMacro(NumberOfDataUploads, int);
+  vtkGetMacro(NumberOfExtinctionRebuilds, int);
+  vtkGetMacro(NumberOfLightVolumeRebuilds, int);
+  vtkGetMacro(NumberOfOcclusionRebuilds, int);
+  vtkGetMacro(NumberOfRenderedFrames, int);
+  ///@}
+
+  /**
+   * Renders the volume (called by vtkVolume).
+   */
+  void Render(vtkRenderer* renderer, vtkVolume* volume) override;
+
+  /**
+   * Frees the GL resources of `window`.
+   */
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+protected:
+  vtkAVSVolumeMapper();
+  ~vtkAVSVolumeMapper() override;
+
+  /// 0: emission–absorption, 1: ambient occlusion, 2: ambient scattering.
+  virtual int GetEffect() const = 0;
+  /// The subclass's parameters into the shared parameter struct (Core/ScatteringParameters.h),
+  /// which already holds the base class's values.
+  virtual void FillParameters(avs::ScatteringParameters& parameters) = 0;
+  /// For ambient scattering: the loaded scattering table, or nullptr after reporting an error.
+  virtual const avs::ScatteringTable* GetScatteringTable() { return nullptr; }
+
+  double SampleDistance = 0.0;
+  vtkTypeBool UseJittering = 1;
+  double TerminationTransmittance = 1.0 / 255.0;
+
+  int NumberOfDataUploads = 0;
+  int NumberOfExtinctionRebuilds = 0;
+  int NumberOfLightVolumeRebuilds = 0;
+  int NumberOfOcclusionRebuilds = 0;
+  int NumberOfRenderedFrames = 0;
+
+private:
+  vtkAVSVolumeMapper(const vtkAVSVolumeMapper&) = delete;
+  void operator=(const vtkAVSVolumeMapper&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+  bool Prepare(vtkRenderer* renderer, vtkVolume* volume);
+};
+
+#endif

@@ -1,0 +1,30 @@
+#include "vtkAmbientOcclusionVolumeMapper.h"
+
+#include "ScatteringParameters.h"
+
+#include "vtkObjectFactory.h"
+
+vtkStandardNewMacro(vtkAmbientOcclusionVolumeMapper);
+
+void vtkAmbientOcclusionVolumeMapper::FillParameters(avs::ScatteringParameters& p)
+{
+  p.OcclusionRadius = this->OcclusionRadius;
+  p.NumberOfDirections = this->NumberOfDirections;
+  p.AmbientWeight = this->AmbientWeight;
+  p.EmissionWeight = this->EmissionWeight;
+  p.DirectLightWeight = this->DirectLightWeight;
+  // The unshadowed direct light is isotropic and unattenuated by albedo.
+  p.Albedo = 1.0;
+  p.Anisotropy = 0.0;
+}
+
+void vtkAmbientOcclusionVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "OcclusionRadius: " << this->OcclusionRadius
+     << (this->OcclusionRadius > 0 ? "" : " (automatic)") << "\n";
+  os << indent << "NumberOfDirections: " << this->NumberOfDirections << "\n";
+  os << indent << "AmbientWeight: " << this->AmbientWeight << "\n";
+  os << indent << "EmissionWeight: " << this->EmissionWeight << "\n";
+  os << indent << "DirectLightWeight: " << this->DirectLightWeight << "\n";
+}

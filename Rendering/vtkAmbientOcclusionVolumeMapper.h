@@ -1,0 +1,82 @@
+/**
+ * @class   vtkAmbientOcclusionVolumeMapper
+ * @brief   GPU volume mapper with local volumetric ambient occlusion (ALGORITHM.md section 7)
+ *
+ * Emission–absorption with the colour scaled by k_amb AO(x) + k_e, where AO(x) is the mean
+ * transmittance from x over NumberOfDirections well-spread directions up to OcclusionRadius
+ * (Hernell, Ljung and Ynnerman 2010), computed once per change of the data, the transfer
+ * functions, the radius or the direction count and stored in a volume. Optionally adds the
+ * renderer's lights unshadowed (DirectLightWeight). The comparison mapper of the family.
+ */
+#ifndef vtkAmbientOcclusionVolumeMapper_h
+#define vtkAmbientOcclusionVolumeMapper_h
+
+#include "vtkAVSVolumeMapper.h"
+
+class VTKRENDERINGAMBIENTSCATTERING_EXPORT vtkAmbientOcclusionVolumeMapper
+  : public vtkAVSVolumeMapper
+{
+public:
+  static vtkAmbientOcclusionVolumeMapper* New();
+  vtkTypeMacro(vtkAmbientOcclusionVolumeMapper, vtkAVSVolumeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Occlusion radius R in world units. Default 0: automatic, 1/64 of the volume's diagonal but
+   * at least the smallest voxel spacing.
+   */
+  vtkSetClampMacro(OcclusionRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(OcclusionRadius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Directions K, 14 to 1024. Default 32.
+   */
+  vtkSetClampMacro(NumberOfDirections, int, 14, 1024);
+  vtkGetMacro(NumberOfDirections, int);
+  ///@}
+
+  ///@{
+  /**
+   * Weight k_amb of the occlusion term. Default 1.
+   */
+  vtkSetClampMacro(AmbientWeight, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(AmbientWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Emission weight k_e (colour regardless of occlusion). Default 0.
+   */
+  vtkSetClampMacro(EmissionWeight, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(EmissionWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Weight of the renderer's lights added without shadows. Default 0.
+   */
+  vtkSetClampMacro(DirectLightWeight, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(DirectLightWeight, double);
+  ///@}
+
+protected:
+  vtkAmbientOcclusionVolumeMapper() = default;
+  ~vtkAmbientOcclusionVolumeMapper() override = default;
+  int GetEffect() const override { return 1; }
+  void FillParameters(avs::ScatteringParameters& parameters) override;
+
+  double OcclusionRadius = 0.0;
+  int NumberOfDirections = 32;
+  double AmbientWeight = 1.0;
+  double EmissionWeight = 0.0;
+  double DirectLightWeight = 0.0;
+
+private:
+  vtkAmbientOcclusionVolumeMapper(const vtkAmbientOcclusionVolumeMapper&) = delete;
+  void operator=(const vtkAmbientOcclusionVolumeMapper&) = delete;
+};
+
+#endif

@@ -1,0 +1,62 @@
+#include "vtkAmbientScatteringVolumeMapper.h"
+
+#include "ScatteringParameters.h"
+#include "vtkAmbientScatteringTable.h"
+
+#include "vtkObjectFactory.h"
+
+#include <string>
+
+vtkStandardNewMacro(vtkAmbientScatteringVolumeMapper);
+
+vtkAmbientScatteringVolumeMapper::vtkAmbientScatteringVolumeMapper()
+  : Table(vtkAmbientScatteringTable::New())
+{
+}
+
+vtkAmbientScatteringVolumeMapper::~vtkAmbientScatteringVolumeMapper()
+{
+  this->SetScatteringTableFileName(nullptr);
+  this->Table->Delete();
+}
+
+void vtkAmbientScatteringVolumeMapper::FillParameters(avs::ScatteringParameters& p)
+{
+  p.AmbientRadius = this->AmbientRadius;
+  p.Anisotropy = this->Anisotropy;
+  p.Albedo = this->Albedo;
+  p.EmissionWeight = this->EmissionWeight;
+  p.LightVolumeMaximumDimension = this->LightVolumeMaximumDimension;
+}
+
+const avs::ScatteringTable* vtkAmbientScatteringVolumeMapper::GetScatteringTable()
+{
+  const std::string wanted = this->ScatteringTableFileName ? this->ScatteringTableFileName : "";
+  const std::string current = this->Table->GetFileName() ? this->Table->GetFileName() : "";
+  if (wanted != current)
+  {
+    this->Table->SetFileName(wanted.empty() ? nullptr : wanted.c_str());
+  }
+  if (!this->Table->Update())
+  {
+    vtkErrorMacro("Cannot render: no usable scattering table (see the error above).");
+    return nullptr;
+  }
+  return this->Table->GetTable();
+}
+
+void vtkAmbientScatteringVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "AmbientRadius: " << this->AmbientRadius
+     << (this->AmbientRadius > 0 ? "" : " (automatic)") << "\n";
+  os << indent << "Anisotropy: " << this->Anisotropy << "\n";
+  os << indent << "Albedo: " << this->Albedo << "\n";
+  os << indent << "EmissionWeight: " << this->EmissionWeight << "\n";
+  os << indent << "LightVolumeMaximumDimension: " << this->LightVolumeMaximumDimension << "\n";
+  os << indent << "ScatteringTableFileName: "
+     << (this->ScatteringTableFileName ? this->ScatteringTableFileName : "(the shipped table)")
+     << "\n";
+  os << indent << "Table:\n";
+  this->Table->PrintSelf(os, indent.GetNextIndent());
+}
