@@ -106,6 +106,22 @@ vtkAVSVolumeMapper::~vtkAVSVolumeMapper()
   this->Internal->RayCaster.ReleaseGraphicsResources(this->Internal->RayCaster.GetWindow());
 }
 
+double* vtkAVSVolumeMapper::GetBounds()
+{
+  double* bounds = this->Superclass::GetBounds();
+  if (bounds)
+  {
+    for (int i = 0; i < 6; ++i)
+    {
+      if (!std::isfinite(bounds[i]))
+      {
+        return nullptr;
+      }
+    }
+  }
+  return bounds;
+}
+
 void vtkAVSVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   auto& in = *this->Internal;

@@ -83,6 +83,13 @@ public:
   void Render(vtkRenderer* renderer, vtkVolume* volume) override;
 
   /**
+   * The input's bounds; nullptr when they are not finite (NaN or infinite spacing or origin), so
+   * that the renderer does not cull the volume and Render reports the bad input.
+   */
+  double* GetBounds() override;
+  using vtkVolumeMapper::GetBounds;
+
+  /**
    * Frees the GL resources of `window`.
    */
   void ReleaseGraphicsResources(vtkWindow* window) override;

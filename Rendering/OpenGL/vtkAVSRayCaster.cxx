@@ -6,6 +6,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
@@ -288,6 +289,92 @@ bool vtkAVSRayCaster::EnsureProgram(avs::RenderMode mode)
   return true;
 }
 
+void vtkAVSRayCaster::CaptureDepth(int x, int y, int width, int height)
+{
+  vtkOpenGLState* state = this->Window->GetState();
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  // The depth texture must have the framebuffer's depth format for a blit (multisampled
+  // framebuffers cannot be copied from, only resolved by a blit).
+  GLint bits = 24, type = GL_UNSIGNED_NORMALIZED, stencil = 0;
+  if (samples > 0)
+  {
+    GLint readFramebuffer = 0;
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
+    const GLenum attachment = readFramebuffer ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
+    glGetFramebufferAttachmentParameteriv(
+      GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
+    glGetFramebufferAttachmentParameteriv(
+      GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+    glGetFramebufferAttachmentParameteriv(
+      GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &stencil);
+  }
+  const int format = samples <= 0
+    ? -1
+    : (stencil > 0 ? -2
+                   : (type == GL_FLOAT ? vtkTextureObject::Float32
+                                       : (bits >= 32 ? vtkTextureObject::Fixed32
+                                                     : (bits >= 24 ? vtkTextureObject::Fixed24
+                                                                   : vtkTextureObject::Fixed16))));
+  if (!this->Depth || static_cast<int>(this->Depth->GetWidth()) != width ||
+    static_cast<int>(this->Depth->GetHeight()) != height || format != this->DepthFormat)
+  {
+    if (this->Depth)
+    {
+      this->Depth->ReleaseGraphicsResources(this->Window);
+    }
+    this->Depth = vtkSmartPointer<vtkTextureObject>::New();
+    this->Depth->SetContext(this->Window);
+    if (format == -2)
+    {
+      this->Depth->AllocateDepthStencil(width, height);
+    }
+    else
+    {
+      this->Depth->AllocateDepth(width, height, format == -1 ? vtkTextureObject::Float32 : format);
+    }
+    this->Depth->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->Depth->SetWrapT(vtkTextureObject::ClampToEdge);
+    this->DepthFormat = format;
+  }
+  if (samples <= 0)
+  {
+    this->Depth->Activate();
+    this->Depth->CopyFromFrameBuffer(x, y, 0, 0, width, height);
+    this->Depth->Deactivate();
+    return;
+  }
+  if (!this->DepthFramebuffer)
+  {
+    this->DepthFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    this->DepthFramebuffer->SetContext(this->Window);
+  }
+  state->PushFramebufferBindings();
+  this->DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+  this->DepthFramebuffer->AddDepthAttachment(this->Depth);
+  this->DepthFramebuffer->ActivateDrawBuffers(0);
+  glBlitFramebuffer(
+    x, y, x + width, y + height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  const GLenum status = glGetError();
+  if (status != GL_NO_ERROR)
+  {
+    // Unreadable: treat the depth as empty (no geometry) rather than leave garbage.
+    vtkOpenGLState::ScopedglDepthMask depthMask(state);
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglClearDepth(1.0);
+    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  }
+  state->PopFramebufferBindings();
+  if (status != GL_NO_ERROR && !this->DepthWarningGiven)
+  {
+    vtkGenericWarningMacro("Could not read the depth of the multisampled framebuffer (GL error "
+      << status
+      << "): opaque geometry will not hide the volume. Set the render window's "
+         "MultiSamples to 0 to avoid this.");
+    this->DepthWarningGiven = true;
+  }
+}
+
 bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::string& error)
 {
   vtkOpenGLRenderWindow* window = this->Window;
@@ -306,21 +393,8 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
 
   // Copy the depth of what was drawn before, to end rays at opaque geometry.
-  if (!this->Depth || static_cast<int>(this->Depth->GetWidth()) != width ||
-    static_cast<int>(this->Depth->GetHeight()) != height)
-  {
-    if (this->Depth)
-    {
-      this->Depth->ReleaseGraphicsResources(window);
-    }
-    this->Depth = vtkSmartPointer<vtkTextureObject>::New();
-    this->Depth->SetContext(window);
-    this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
-    this->Depth->SetWrapS(vtkTextureObject::ClampToEdge);
-    this->Depth->SetWrapT(vtkTextureObject::ClampToEdge);
-  }
+  this->CaptureDepth(x, y, width, height);
   this->Depth->Activate();
-  this->Depth->CopyFromFrameBuffer(x, y, 0, 0, width, height);
 
   window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
   vtkShaderProgram* program = this->Quad->Program;

@@ -23,6 +23,7 @@
 #include <vector>
 
 class vtkMatrix4x4;
+class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
@@ -79,12 +80,17 @@ private:
     const float* data,
     std::string& error);
   bool EnsureProgram(avs::RenderMode mode);
+  /// Copies the depth of the viewport into Depth (multisampled framebuffers are resolved).
+  void CaptureDepth(int x, int y, int width, int height);
 
   vtkOpenGLRenderWindow* Window = nullptr;
   vtkSmartPointer<vtkTextureObject> Scalars, Transfer, Averaged, Occlusion, Table, Depth;
   vtkSmartPointer<vtkTextureObject> LightVolumes[2];
+  vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFramebuffer;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   int QuadMode = -1;
+  int DepthFormat = 0;
+  bool DepthWarningGiven = false;
   float TransferSize = 1.0f;
   float ScalarRange[2] = { 0.0f, 1.0f };
   float TableSize[2] = { 1.0f, 1.0f };

@@ -12,7 +12,9 @@ def main():
         if not condition:
             failures.append(what)
 
-    for name in ("vtkAmbientScatteringTable", "vtkVolumeReferenceRenderer"):
+    for name in ("vtkAmbientScatteringTable", "vtkVolumeReferenceRenderer",
+                 "vtkEmissionAbsorptionVolumeMapper", "vtkAmbientOcclusionVolumeMapper",
+                 "vtkAmbientScatteringVolumeMapper"):
         check(hasattr(ambientscattering, name), "missing class " + name)
 
     table = ambientscattering.vtkAmbientScatteringTable()

@@ -1,0 +1,321 @@
+// The GPU mappers as a VTK user meets them: precomputation redone only when its inputs change
+// (rebuild counters), opaque geometry ends the rays, several windows, resizing, releasing
+// resources, bad input (an error and nothing drawn), and PrintSelf.
+#include "MapperTestScene.h"
+#include "TestErrorObserver.h"
+
+#include "vtkActor.h"
+#include "vtkAmbientOcclusionVolumeMapper.h"
+#include "vtkAmbientScatteringVolumeMapper.h"
+#include "vtkDoubleArray.h"
+#include "vtkEmissionAbsorptionVolumeMapper.h"
+#include "vtkFloatArray.h"
+#include "vtkLightCollection.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkSphereSource.h"
+
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace
+{
+struct Scene
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkVolume> Volume;
+  Scene(vtkAVSVolumeMapper* mapper, int size = 96)
+  {
+    this->Window->SetSize(size, size);
+    this->Window->SetMultiSamples(0);
+    this->Window->OffScreenRenderingOn();
+    this->Window->AddRenderer(this->Renderer);
+    AddTestLights(this->Renderer);
+    PlaceTestCamera(this->Renderer->GetActiveCamera());
+    this->Volume->SetMapper(mapper);
+    this->Volume->SetProperty(MakeTestProperty());
+    this->Renderer->AddVolume(this->Volume);
+  }
+  vtkSmartPointer<vtkImageData> Render()
+  {
+    this->Window->Render();
+    return Grab(this->Window);
+  }
+};
+
+vtkLight* LightAt(vtkRenderer* renderer, int index)
+{
+  vtkLightCollection* lights = renderer->GetLights();
+  lights->InitTraversal();
+  vtkLight* l = nullptr;
+  for (int i = 0; i <= index; ++i)
+  {
+    l = lights->GetNextItem();
+  }
+  return l;
+}
+} // namespace
+
+int main(int, char*[])
+{
+  int failures = 0;
+  auto data = MakeTestVolume(32);
+
+  // --- Rebuild counters: ambient scattering.
+  {
+    vtkNew<vtkAmbientScatteringVolumeMapper> mapper;
+    mapper->SetInputData(data);
+    Scene scene(mapper);
+    scene.Render();
+    AVS_CHECK(mapper->GetNumberOfDataUploads() == 1);
+    AVS_CHECK(mapper->GetNumberOfExtinctionRebuilds() == 1);
+    AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 2);
+    // A camera move only re-renders.
+    scene.Renderer->GetActiveCamera()->Azimuth(30);
+    scene.Render();
+    scene.Renderer->GetActiveCamera()->Elevation(10);
+    scene.Render();
+    AVS_CHECK(mapper->GetNumberOfRenderedFrames() == 3);
+    AVS_CHECK(mapper->GetNumberOfDataUploads() == 1);
+    AVS_CHECK(mapper->GetNumberOfExtinctionRebuilds() == 1);
+    AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 2);
+    // A light move rebuilds that light's volume only; a change of intensity nothing.
+    LightAt(scene.Renderer, 1)->SetPosition(0.2, -0.1, 0.1);
+    scene.Render();
+    AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 3);
+    LightAt(scene.Renderer, 0)->SetIntensity(3.0);
+    scene.Render();
+    AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 3);
+    AVS_CHECK(mapper->GetNumberOfExtinctionRebuilds() == 1);
+    // Moving the volume moves every light relative to it.
+    scene.Volume->SetPosition(0.1, 0.0, 0.0);
+    scene.Render();
+    AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 5);
+    AVS_CHECK(mapper->GetNumberOfExtinctionRebuilds() == 1);
+    // A transfer-function change rebuilds the averaged extinction and every light volume.
+    scene.Volume->GetProperty()->GetScalarOpacity()->AddPoint(500, 0.3);
+    scene.Render();
+    AVS_CHECK(mapper->GetNumberOfExtinctionRebuilds() == 2);
+    AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 7);
+    AVS_CHECK(mapper->GetNumberOfDataUploads() == 1);
+    // The radius: both. g and the albedo: the light volumes (F changes), not the average.
+    mapper->SetAmbientRadius(0.1);
+    scene.Render();
+    AVS_CHECK(mapper->GetNumberOfExtinctionRebuilds() == 3);
+    AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 9);
+    mapper->SetAlbedo(0.5);
+    scene.Render();
+    mapper->SetAnisotropy(-0.3);
+    scene.Render();
+    AVS_CHECK(mapper->GetNumberOfExtinctionRebuilds() == 3);
+    AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 13);
+    // New data: everything.
+    data->Modified();
+    scene.Render();
+    AVS_CHECK(mapper->GetNumberOfDataUploads() == 2);
+    AVS_CHECK(mapper->GetNumberOfExtinctionRebuilds() == 4);
+    AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 15);
+    // The sample distance and jittering only re-render.
+    mapper->SetSampleDistance(0.03);
+    mapper->UseJitteringOff();
+    scene.Render();
+    AVS_CHECK(mapper->GetNumberOfExtinctionRebuilds() == 4);
+    AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 15);
+
+    std::ostringstream os;
+    mapper->Print(os);
+    for (const char* key : { "AmbientRadius",
+           "Anisotropy",
+           "Albedo",
+           "EmissionWeight",
+           "LightVolumeMaximumDimension",
+           "ScatteringTableFileName",
+           "SampleDistance",
+           "UseJittering",
+           "TerminationTransmittance",
+           "NumberOfLightVolumeRebuilds",
+           "Table" })
+    {
+      AVS_CHECK(os.str().find(key) != std::string::npos);
+    }
+  }
+
+  // --- Rebuild counters: ambient occlusion.
+  {
+    vtkNew<vtkAmbientOcclusionVolumeMapper> mapper;
+    mapper->SetInputData(data);
+    Scene scene(mapper);
+    scene.Render();
+    scene.Renderer->GetActiveCamera()->Azimuth(40);
+    scene.Render();
+    AVS_CHECK(mapper->GetNumberOfOcclusionRebuilds() == 1);
+    mapper->SetOcclusionRadius(0.2);
+    scene.Render();
+    AVS_CHECK(mapper->GetNumberOfOcclusionRebuilds() == 2);
+    scene.Volume->GetProperty()->GetScalarOpacity()->AddPoint(450, 0.2);
+    scene.Render();
+    AVS_CHECK(mapper->GetNumberOfOcclusionRebuilds() == 3);
+    std::ostringstream os;
+    mapper->Print(os);
+    for (const char* key : { "OcclusionRadius",
+           "NumberOfDirections",
+           "AmbientWeight",
+           "EmissionWeight",
+           "DirectLightWeight" })
+    {
+      AVS_CHECK(os.str().find(key) != std::string::npos);
+    }
+  }
+
+  // --- Opaque geometry ends the rays; several windows; resize; releasing resources.
+  {
+    vtkNew<vtkEmissionAbsorptionVolumeMapper> mapper;
+    mapper->SetInputData(data);
+    mapper->UseJitteringOff();
+    Scene scene(mapper, 96);
+    const auto volumeOnly = scene.Render();
+    // A red ball between the camera and the volume hides the volume where it is drawn.
+    vtkNew<vtkSphereSource> ball;
+    ball->SetCenter(0.38, 0.28, 1.0); // on the line of sight to the centre, in front of the box
+    ball->SetRadius(0.08);
+    ball->SetThetaResolution(24);
+    ball->SetPhiResolution(24);
+    vtkNew<vtkPolyDataMapper> ballMapper;
+    ballMapper->SetInputConnection(ball->GetOutputPort());
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(ballMapper);
+    actor->GetProperty()->SetColor(1, 0, 0);
+    actor->GetProperty()->SetAmbient(1.0);
+    actor->GetProperty()->SetDiffuse(0.0);
+    scene.Renderer->AddActor(actor);
+    const auto withBall = scene.Render();
+    const double centre[3] = { withBall->GetScalarComponentAsDouble(48, 48, 0, 0),
+      withBall->GetScalarComponentAsDouble(48, 48, 0, 1),
+      withBall->GetScalarComponentAsDouble(48, 48, 0, 2) };
+    AVS_CHECK(centre[0] == 255 && centre[1] == 0 && centre[2] == 0);
+    // Elsewhere the picture is unchanged.
+    AVS_CHECK(withBall->GetScalarComponentAsDouble(10, 10, 0, 1) ==
+      volumeOnly->GetScalarComponentAsDouble(10, 10, 0, 1));
+    // The same with a multisampled window (VTK's default): its depth is resolved for the rays.
+    {
+      Scene msaa(mapper, 96);
+      msaa.Window->SetMultiSamples(4);
+      msaa.Volume->SetProperty(scene.Volume->GetProperty());
+      msaa.Renderer->AddActor(actor);
+      const auto picture = msaa.Render();
+      AVS_CHECK(picture->GetScalarComponentAsDouble(48, 48, 0, 0) > 250);
+      AVS_CHECK(picture->GetScalarComponentAsDouble(48, 48, 0, 1) < 5);
+      AVS_CHECK(std::abs(picture->GetScalarComponentAsDouble(10, 10, 0, 1) -
+                  volumeOnly->GetScalarComponentAsDouble(10, 10, 0, 1)) < 3);
+      msaa.Renderer->RemoveActor(actor);
+    }
+    // A ball inside the volume: volume in front of it is added, volume behind it is not.
+    ball->SetCenter(0, 0, 0);
+    ball->SetRadius(0.3);
+    const auto inside = scene.Render();
+    scene.Renderer->RemoveActor(actor);
+    const double r = inside->GetScalarComponentAsDouble(48, 48, 0, 0);
+    const double g = inside->GetScalarComponentAsDouble(48, 48, 0, 1);
+    AVS_CHECK(g > 0.0); // the volume in front of the ball adds colour
+    AVS_CHECK(r > g);   // and the red ball shows through
+    AVS_CHECK(std::abs(g - volumeOnly->GetScalarComponentAsDouble(48, 48, 0, 1)) > 2.0);
+
+    // A second window with the same mapper, then back to the first.
+    Scene other(mapper, 64);
+    other.Volume->SetProperty(scene.Volume->GetProperty());
+    const auto second = other.Render();
+    AVS_CHECK(Brightness(second) > 1000.0);
+    const auto again = scene.Render();
+    AVS_CHECK(Psnr(again, volumeOnly) > 60.0);
+    // Resize.
+    scene.Window->SetSize(80, 72);
+    const auto resized = scene.Render();
+    int dims[3];
+    resized->GetDimensions(dims);
+    AVS_CHECK(dims[0] == 80 && dims[1] == 72);
+    AVS_CHECK(Brightness(resized) > 1000.0);
+    // Released resources come back on the next render.
+    mapper->ReleaseGraphicsResources(scene.Window);
+    scene.Window->SetSize(96, 96);
+    AVS_CHECK(Psnr(scene.Render(), volumeOnly) > 60.0);
+  }
+
+  // --- Bad input: an error, nothing drawn, no crash; for every mapper.
+  {
+    vtkNew<vtkEmissionAbsorptionVolumeMapper> ea;
+    vtkNew<vtkAmbientOcclusionVolumeMapper> ao;
+    vtkNew<vtkAmbientScatteringVolumeMapper> as;
+    for (vtkAVSVolumeMapper* mapper : { static_cast<vtkAVSVolumeMapper*>(ea),
+           static_cast<vtkAVSVolumeMapper*>(ao),
+           static_cast<vtkAVSVolumeMapper*>(as) })
+    {
+      vtkNew<TestErrorObserver> errors;
+      mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+      Scene scene(mapper, 48);
+      auto expectError = [&](vtkImageData* input, const std::string& text)
+      {
+        errors->Clear();
+        mapper->SetInputData(input);
+        const int frames = mapper->GetNumberOfRenderedFrames();
+        const auto picture = scene.Render();
+        if (errors->Errors == 0 || errors->LastError.find(text) == std::string::npos)
+        {
+          std::cerr << mapper->GetClassName() << ": expected an error with '" << text << "', got '"
+                    << errors->LastError << "'\n";
+          ++failures;
+        }
+        AVS_CHECK(Brightness(picture) == 0.0);
+        AVS_CHECK(mapper->GetNumberOfRenderedFrames() == frames);
+      };
+      vtkNew<vtkImageData> empty;
+      expectError(empty, "empty");
+      auto noScalars = MakeTestVolume(8);
+      noScalars->GetPointData()->RemoveArray(0);
+      expectError(noScalars, "no point scalars");
+      auto vectors = MakeTestVolume(8);
+      vtkNew<vtkFloatArray> v;
+      v->SetNumberOfComponents(3);
+      v->SetNumberOfTuples(vectors->GetNumberOfPoints());
+      v->Fill(1.0);
+      vectors->GetPointData()->SetScalars(v);
+      expectError(vectors, "components");
+      auto nan = MakeTestVolume(8);
+      vtkNew<vtkDoubleArray> d;
+      d->SetNumberOfTuples(nan->GetNumberOfPoints());
+      d->Fill(100.0);
+      d->SetValue(5, std::numeric_limits<double>::quiet_NaN());
+      nan->GetPointData()->SetScalars(d);
+      expectError(nan, "NaN");
+      auto flat = MakeTestVolume(8);
+      flat->SetSpacing(0.1, std::numeric_limits<double>::quiet_NaN(), 0.1);
+      expectError(flat, "spacing");
+      // Wider than any GPU's 3D textures (2 points deep and high, so it is small in memory).
+      vtkNew<vtkImageData> huge;
+      huge->SetDimensions(70000, 2, 2);
+      huge->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+      huge->GetPointData()->GetScalars()->Fill(0);
+      expectError(huge, "too large for the GPU");
+      // Good input again renders.
+      mapper->SetInputData(data);
+      errors->Clear();
+      AVS_CHECK(Brightness(scene.Render()) > 0.0);
+      AVS_CHECK(errors->Errors == 0);
+    }
+    // A corrupt scattering table.
+    vtkNew<TestErrorObserver> errors;
+    as->AddObserver(vtkCommand::ErrorEvent, errors);
+    as->SetScatteringTableFileName("/nonexistent/table.avst");
+    Scene scene(as, 48);
+    AVS_CHECK(Brightness(scene.Render()) == 0.0);
+    AVS_CHECK(errors->Errors >= 1);
+  }
+
+  if (failures)
+  {
+    std::cerr << failures << " check(s) failed\n";
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}
