@@ -12,21 +12,17 @@ uniform float u_albedo;
 uniform float u_ambientRadius;
 uniform float u_emissionWeight;
 
-float InScattering(float cosTheta, float tau)
+// A(theta; tau) from the table slice; v is tau's table coordinate (see TableTauCoordinate).
+float InScattering(float cosTheta, float v)
 {
   float theta = acos(clamp(cosTheta, -1.0, 1.0));
   float u = sqrt(clamp(theta / PI, 0.0, 1.0));
-  float v = log(1.0 + clamp(tau, 0.0, u_tableTauMaximum)) / log(1.0 + u_tableTauMaximum);
   return texture(u_table, (vec2(u, v) * (u_tableSize - 1.0) + 0.5) / u_tableSize).r;
 }
 
-float TubeTransmittance(int j, vec3 index)
+float TableTauCoordinate(float tau)
 {
-  vec3 f = index / (u_dimensions - 1.0);
-  vec3 coordinate = (f * (u_lightVolumeDimensions - 1.0) + 0.5) / u_lightVolumeDimensions;
-  vec4 v = j < 4 ? texture(u_lightVolumes0, coordinate) : texture(u_lightVolumes1, coordinate);
-  int k = j < 4 ? j : j - 4;
-  return k == 0 ? v.r : (k == 1 ? v.g : (k == 2 ? v.b : v.a));
+  return log(1.0 + clamp(tau, 0.0, u_tableTauMaximum)) / log(1.0 + u_tableTauMaximum);
 }
 //AVS::Effect::Sample
     L += T * (1.0 - u_albedo) * here.a * u_emissionWeight * dt * here.rgb;
@@ -35,13 +31,19 @@ float TubeTransmittance(int j, vec3 index)
       vec4 s2 = ClassifyAt(ahead);
       if (s2.a > 0.0)
       {
-        float tau = u_ambientRadius * texture(u_averaged, (ahead + 0.5) / u_dimensions).r;
+        float v = TableTauCoordinate(u_ambientRadius * texture(u_averaged, (ahead + 0.5) / u_dimensions).r);
         vec3 world = origin + (t + u_ambientRadius) * direction;
+        // The tube transmittances of all lights at x', four to a texture fetch.
+        vec3 f = ahead / (u_dimensions - 1.0);
+        vec3 lc = (f * (u_lightVolumeDimensions - 1.0) + 0.5) / u_lightVolumeDimensions;
+        vec4 tubes0 = texture(u_lightVolumes0, lc);
+        vec4 tubes1 = u_numberOfLights > 4 ? texture(u_lightVolumes1, lc) : vec4(1.0);
         vec3 inscatter = vec3(0.0);
         for (int j = 0; j < u_numberOfLights; ++j)
         {
           float cosTheta = dot(LightPropagation(j, world), -direction);
-          inscatter += LightIrradiance(j, world) * (TubeTransmittance(j, ahead) * InScattering(cosTheta, tau));
+          float tube = j < 4 ? tubes0[j] : tubes1[j - 4];
+          inscatter += LightIrradiance(j, world) * (tube * InScattering(cosTheta, v));
         }
         L += T * s2.a * dt * s2.rgb * inscatter;
       }

@@ -21,9 +21,7 @@ int main(int argc, char* argv[])
   property->ShadeOff();
 
   vtkNew<vtkRenderWindow> window;
-  window->SetSize(size, size);
-  window->SetMultiSamples(0);
-  window->OffScreenRenderingOn();
+  PrepareTestWindow(window, size, size);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
   PlaceTestCamera(renderer->GetActiveCamera());

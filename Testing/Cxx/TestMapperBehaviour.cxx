@@ -28,9 +28,7 @@ struct Scene
   vtkNew<vtkVolume> Volume;
   Scene(vtkAVSVolumeMapper* mapper, int size = 96)
   {
-    this->Window->SetSize(size, size);
-    this->Window->SetMultiSamples(0);
-    this->Window->OffScreenRenderingOn();
+    PrepareTestWindow(this->Window, size, size);
     this->Window->AddRenderer(this->Renderer);
     AddTestLights(this->Renderer);
     PlaceTestCamera(this->Renderer->GetActiveCamera());
@@ -242,18 +240,19 @@ int main(int, char*[])
     AVS_CHECK(Psnr(scene.Render(), volumeOnly) > 60.0);
   }
 
-  // --- Bad input: an error, nothing drawn, no crash; for every mapper.
+  // --- Bad input: an error, nothing drawn, no crash; for every mapper (one window for all).
   {
     vtkNew<vtkEmissionAbsorptionVolumeMapper> ea;
     vtkNew<vtkAmbientOcclusionVolumeMapper> ao;
     vtkNew<vtkAmbientScatteringVolumeMapper> as;
+    Scene scene(ea, 48);
     for (vtkAVSVolumeMapper* mapper : { static_cast<vtkAVSVolumeMapper*>(ea),
            static_cast<vtkAVSVolumeMapper*>(ao),
            static_cast<vtkAVSVolumeMapper*>(as) })
     {
       vtkNew<TestErrorObserver> errors;
       mapper->AddObserver(vtkCommand::ErrorEvent, errors);
-      Scene scene(mapper, 48);
+      scene.Volume->SetMapper(mapper);
       auto expectError = [&](vtkImageData* input, const std::string& text)
       {
         errors->Clear();
@@ -303,11 +302,11 @@ int main(int, char*[])
       AVS_CHECK(Brightness(scene.Render()) > 0.0);
       AVS_CHECK(errors->Errors == 0);
     }
-    // A corrupt scattering table.
+    // A missing scattering table.
     vtkNew<TestErrorObserver> errors;
     as->AddObserver(vtkCommand::ErrorEvent, errors);
     as->SetScatteringTableFileName("/nonexistent/table.avst");
-    Scene scene(as, 48);
+    scene.Volume->SetMapper(as);
     AVS_CHECK(Brightness(scene.Render()) == 0.0);
     AVS_CHECK(errors->Errors >= 1);
   }

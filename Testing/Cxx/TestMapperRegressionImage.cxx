@@ -51,6 +51,10 @@ int main(int argc, char* argv[])
   mapper->UseJitteringOff();
 
   vtkNew<vtkRenderWindow> window;
+  if (void* display = SharedDisplay())
+  {
+    window->SetDisplayId(display);
+  }
   window->SetSize(192, 192);
   window->SetMultiSamples(0);
   vtkNew<vtkRenderer> renderer;

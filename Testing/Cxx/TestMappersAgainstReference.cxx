@@ -22,9 +22,7 @@ int main(int argc, char* argv[])
   auto property = MakeTestProperty();
 
   vtkNew<vtkRenderWindow> window;
-  window->SetSize(size, size);
-  window->SetMultiSamples(0);
-  window->OffScreenRenderingOn();
+  PrepareTestWindow(window, size, size);
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0, 0, 0);
   window->AddRenderer(renderer);

@@ -1,0 +1,240 @@
+// avs-bench-mappers: frame times of the GPU mappers side by side with VTK's own
+// vtkGPUVolumeRayCastMapper, in one run, on one scene, as ratios:
+//
+//   bench <name> <value> <unit>
+//   ratio <name> <value>
+//
+// Scene: the built-in nebula (default 256^3), 512 x 512 pixels, the same sample distance and
+// transfer functions for every mapper, jittering off. Each mapper renders a warm-up frame (which
+// includes its precomputation), then frames with a camera turning 3 degrees per frame; the
+// median of their times is reported. Then the time of the frame after a transfer-function change
+// and after a light move (ambient scattering, 4 lights), i.e. the rebuild plus one frame.
+#include "ProceduralVolume.h"
+
+#include "vtkAmbientOcclusionVolumeMapper.h"
+#include "vtkAmbientScatteringVolumeMapper.h"
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkEmissionAbsorptionVolumeMapper.h"
+#include "vtkFloatArray.h"
+#include "vtkGPUVolumeRayCastMapper.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace
+{
+double Seconds(const std::chrono::steady_clock::time_point& start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+struct Bench
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkVolumeProperty> Property;
+  vtkNew<vtkPiecewiseFunction> Opacity;
+  vtkNew<vtkImageData> Volume;
+  std::vector<vtkSmartPointer<vtkLight>> Lights;
+  int Frames = 10;
+
+  double Frame()
+  {
+    const auto start = std::chrono::steady_clock::now();
+    this->Window->Render();
+    this->Window->WaitForCompletion();
+    return Seconds(start);
+  }
+
+  void SetLights(int count)
+  {
+    this->Renderer->RemoveAllLights();
+    for (int i = 0; i < count && i < static_cast<int>(this->Lights.size()); ++i)
+    {
+      this->Renderer->AddLight(this->Lights[i]);
+    }
+  }
+
+  /// Warm-up frame time, then the median over Frames frames with a moving camera.
+  std::pair<double, double> Measure(vtkVolumeMapper* mapper)
+  {
+    vtkNew<vtkVolume> volume;
+    volume->SetMapper(mapper);
+    volume->SetProperty(this->Property);
+    this->Renderer->AddVolume(volume);
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->SetPosition(0.5, 0.7, 4.2);
+    camera->SetFocalPoint(0, 0, 0);
+    camera->SetViewUp(0, 1, 0);
+    this->Renderer->ResetCameraClippingRange();
+    const double first = this->Frame();
+    std::vector<double> times;
+    for (int f = 0; f < this->Frames; ++f)
+    {
+      camera->Azimuth(3.0);
+      this->Renderer->ResetCameraClippingRange();
+      times.push_back(this->Frame());
+    }
+    this->Renderer->RemoveVolume(volume);
+    std::sort(times.begin(), times.end());
+    return { first, times[times.size() / 2] };
+  }
+};
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  int voxels = 256, size = 512, frames = 10;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h")
+    {
+      std::printf("Usage: avs-bench-mappers [--voxels N] [--size N] [--frames N]\n\n"
+                  "Median frame times of VTK's vtkGPUVolumeRayCastMapper and of the module's "
+                  "mappers on the built-in nebula\n(N^3 voxels, default 256), N x N pixels "
+                  "(default 512), over N frames (default 10), and their ratios.\n");
+      return 0;
+    }
+    if (i + 1 < argc && (arg == "--voxels" || arg == "--size" || arg == "--frames"))
+    {
+      const int v = std::atoi(argv[++i]);
+      (arg == "--voxels" ? voxels : (arg == "--size" ? size : frames)) = std::max(2, v);
+    }
+  }
+
+  Bench b;
+  b.Frames = frames;
+  const avs::Grid nebula = avs::MakeNebula(voxels);
+  const auto& g = nebula.Geometry;
+  b.Volume->SetDimensions(g.Dimensions[0], g.Dimensions[1], g.Dimensions[2]);
+  b.Volume->SetSpacing(g.Spacing.x, g.Spacing.y, g.Spacing.z);
+  b.Volume->SetOrigin(g.Origin.x, g.Origin.y, g.Origin.z);
+  vtkNew<vtkFloatArray> values;
+  values->SetNumberOfTuples(static_cast<vtkIdType>(nebula.Values.size()));
+  std::copy(nebula.Values.begin(), nebula.Values.end(), values->GetPointer(0));
+  b.Volume->GetPointData()->SetScalars(values);
+
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0.0, 0.25, 0.35, 0.9);
+  color->AddRGBPoint(0.5, 0.9, 0.5, 0.4);
+  color->AddRGBPoint(1.0, 1.0, 0.95, 0.8);
+  b.Opacity->AddPoint(0.0, 0.0);
+  b.Opacity->AddPoint(0.05, 0.0);
+  b.Opacity->AddPoint(0.5, 0.25);
+  b.Opacity->AddPoint(1.0, 0.6);
+  b.Property->SetColor(color);
+  b.Property->SetScalarOpacity(b.Opacity);
+  b.Property->SetScalarOpacityUnitDistance(2.0 / 48.0);
+  b.Property->SetInterpolationTypeToLinear();
+  b.Property->ShadeOff();
+
+  // Four lights: a directional light, a point light at the centre, two more directional.
+  const double directions[3][3] = { { -1, 1, 0.5 }, { 1, 0.2, -0.3 }, { 0.1, -1, 0.4 } };
+  for (int i = 0; i < 4; ++i)
+  {
+    auto light = vtkSmartPointer<vtkLight>::New();
+    light->SetLightTypeToSceneLight();
+    if (i == 1)
+    {
+      light->SetPositional(true);
+      light->SetConeAngle(180);
+      light->SetPosition(0, 0, 0);
+      light->SetFocalPoint(0, 0, -1);
+      light->SetIntensity(10.0);
+    }
+    else
+    {
+      const double* d = directions[i == 0 ? 0 : i - 1];
+      light->SetPositional(false);
+      light->SetPosition(d[0], d[1], d[2]);
+      light->SetFocalPoint(0, 0, 0);
+      light->SetIntensity(5.0);
+    }
+    b.Lights.push_back(light);
+  }
+
+  b.Window->SetSize(size, size);
+  b.Window->SetMultiSamples(0);
+  b.Window->OffScreenRenderingOn();
+  b.Window->AddRenderer(b.Renderer);
+  b.SetLights(1);
+
+  const double sampleDistance = 0.5 * g.Spacing.x;
+  std::printf("# scene: nebula %d^3, %d x %d pixels, sample distance %g, %d frames per mapper\n",
+    voxels,
+    size,
+    size,
+    sampleDistance,
+    frames);
+
+  vtkNew<vtkGPUVolumeRayCastMapper> vtkEA;
+  vtkEA->SetInputData(b.Volume);
+  vtkEA->SetAutoAdjustSampleDistances(0);
+  vtkEA->SetSampleDistance(sampleDistance);
+  vtkEA->SetUseJittering(0);
+  vtkNew<vtkEmissionAbsorptionVolumeMapper> ea;
+  vtkNew<vtkAmbientOcclusionVolumeMapper> ao;
+  vtkNew<vtkAmbientScatteringVolumeMapper> as1;
+  vtkNew<vtkAmbientScatteringVolumeMapper> as4;
+  for (vtkAVSVolumeMapper* m : { static_cast<vtkAVSVolumeMapper*>(ea),
+         static_cast<vtkAVSVolumeMapper*>(ao),
+         static_cast<vtkAVSVolumeMapper*>(as1),
+         static_cast<vtkAVSVolumeMapper*>(as4) })
+  {
+    m->SetInputData(b.Volume);
+    m->SetSampleDistance(sampleDistance);
+    m->UseJitteringOff();
+  }
+
+  const auto vtkTimes = b.Measure(vtkEA);
+  std::printf("bench frame_vtk_ea %.4f s\n", vtkTimes.second);
+  const auto eaTimes = b.Measure(ea);
+  std::printf("bench frame_ea %.4f s\n", eaTimes.second);
+  const auto aoTimes = b.Measure(ao);
+  std::printf("bench frame_ao %.4f s\n", aoTimes.second);
+  std::printf("bench first_frame_ao %.4f s\n", aoTimes.first);
+  const auto as1Times = b.Measure(as1);
+  std::printf("bench frame_as1 %.4f s\n", as1Times.second);
+  std::printf("bench first_frame_as1 %.4f s\n", as1Times.first);
+  b.SetLights(4);
+  const auto as4Times = b.Measure(as4);
+  std::printf("bench frame_as4 %.4f s\n", as4Times.second);
+  std::printf("bench first_frame_as4 %.4f s\n", as4Times.first);
+
+  // Rebuilds with 4 lights: a transfer-function change, then one light's move.
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(as4);
+  volume->SetProperty(b.Property);
+  b.Renderer->AddVolume(volume);
+  b.Frame();
+  b.Opacity->AddPoint(0.75, 0.45);
+  const double tfFrame = b.Frame();
+  std::printf("bench rebuild_transfer_function_as4 %.4f s\n", tfFrame - as4Times.second);
+  b.Lights[1]->SetPosition(0.1, 0.05, 0.0);
+  const double lightFrame = b.Frame();
+  std::printf("bench rebuild_light_move_as4 %.4f s\n", lightFrame - as4Times.second);
+  b.Renderer->RemoveVolume(volume);
+
+  std::printf("ratio ea_over_vtk_ea %.3f\n", eaTimes.second / vtkTimes.second);
+  std::printf("ratio as_over_ea %.3f\n", as1Times.second / eaTimes.second);
+  std::printf("ratio as4_over_ea %.3f\n", as4Times.second / eaTimes.second);
+  std::printf("ratio ao_over_ea %.3f\n", aoTimes.second / eaTimes.second);
+  std::printf(
+    "ratio tf_rebuild_over_ea_frame %.3f\n", (tfFrame - as4Times.second) / eaTimes.second);
+  return 0;
+}
