@@ -1,12 +1,14 @@
 // Each GPU mapper's picture against the CPU reference ray caster on the same scene: same
-// volume, transfer functions, lights, camera and sample distance, jittering off. Metric: PSNR
-// over the RGB picture; threshold 35 dB.
+// volume, transfer functions, lights, camera and sample distance, jittering off; in perspective
+// from outside, from inside the volume (with a spot light and a headlight added) and in parallel
+// projection. Metric: PSNR over the RGB picture; threshold 35 dB.
 #include "MapperTestScene.h"
 #include "TestErrorObserver.h"
 
 #include "vtkAmbientOcclusionVolumeMapper.h"
 #include "vtkAmbientScatteringVolumeMapper.h"
 #include "vtkEmissionAbsorptionVolumeMapper.h"
+#include "vtkLight.h"
 #include "vtkPNGWriter.h"
 #include "vtkVolumeReferenceRenderer.h"
 
@@ -27,7 +29,6 @@ int main(int argc, char* argv[])
   renderer->SetBackground(0, 0, 0);
   window->AddRenderer(renderer);
   AddTestLights(renderer);
-  PlaceTestCamera(renderer->GetActiveCamera());
 
   const double sampleDistance = 0.02;
   vtkNew<vtkEmissionAbsorptionVolumeMapper> ea;
@@ -39,48 +40,82 @@ int main(int argc, char* argv[])
   as->SetAlbedo(0.9);
   vtkAVSVolumeMapper* mappers[3] = { ea, ao, as };
   const char* names[3] = { "ea", "ao", "as" };
-  for (int m = 0; m < 3; ++m)
-  {
-    vtkAVSVolumeMapper* mapper = mappers[m];
-    vtkNew<TestErrorObserver> errors;
-    mapper->AddObserver(vtkCommand::ErrorEvent, errors);
-    mapper->SetInputData(volumeData);
-    mapper->SetSampleDistance(sampleDistance);
-    mapper->UseJitteringOff();
-    vtkNew<vtkVolume> volume;
-    volume->SetMapper(mapper);
-    volume->SetProperty(property);
-    renderer->AddVolume(volume);
-    window->Render();
-    auto gpu = Grab(window);
-    renderer->RemoveVolume(volume);
-    AVS_CHECK(errors->Errors == 0);
-    AVS_CHECK(mapper->GetNumberOfRenderedFrames() == 1);
 
-    vtkNew<vtkVolumeReferenceRenderer> reference;
-    reference->SetInputData(volumeData);
-    reference->SetVolumeProperty(property);
-    reference->SetRenderer(renderer);
-    reference->SetImageSize(size, size);
-    reference->SetSampleDistance(sampleDistance);
-    reference->SetRenderMode(m);
-    reference->SetOcclusionRadius(0.15);
-    reference->SetAmbientRadius(0.08);
-    reference->SetAnisotropy(0.4);
-    reference->SetAlbedo(0.9);
-    reference->Update();
-    const double psnr = Psnr(gpu, reference->GetOutput());
-    std::cout << names[m] << ": PSNR " << psnr << " dB, brightness GPU " << Brightness(gpu)
-              << " CPU " << Brightness(reference->GetOutput()) << "\n";
-    for (int which = 0; which < 2; ++which)
+  // Three views: perspective from outside (a directional and a point light); the camera inside
+  // the volume (plus a spot light and a headlight); parallel projection.
+  for (int view = 0; view < 3; ++view)
+  {
+    vtkCamera* camera = renderer->GetActiveCamera();
+    PlaceTestCamera(camera);
+    if (view == 1)
     {
-      vtkNew<vtkPNGWriter> writer;
-      writer->SetFileName((dir + "/" + names[m] + (which ? "_cpu.png" : "_gpu.png")).c_str());
-      writer->SetInputData(which ? reference->GetOutput() : gpu.Get());
-      writer->Write();
+      camera->SetPosition(0.15, 0.1, 0.45); // inside the box, in the shell's cavity
+      camera->SetFocalPoint(0.0, 0.0, -0.5);
+      camera->SetViewAngle(60);
+      camera->SetClippingRange(0.0005, 5.0);
+      vtkNew<vtkLight> spot;
+      spot->SetLightTypeToSceneLight();
+      spot->SetPositional(true);
+      spot->SetPosition(0.9, -0.6, 0.9);
+      spot->SetFocalPoint(0, 0, 0);
+      spot->SetConeAngle(25);
+      spot->SetExponent(2);
+      spot->SetIntensity(20.0);
+      renderer->AddLight(spot);
+      vtkNew<vtkLight> head;
+      head->SetLightTypeToHeadlight();
+      head->SetIntensity(2.0);
+      renderer->AddLight(head);
     }
-    AVS_CHECK(Brightness(gpu) > 1000.0);
-    AVS_CHECK(psnr >= 35.0);
+    else if (view == 2)
+    {
+      camera->ParallelProjectionOn();
+      camera->SetParallelScale(1.1);
+    }
+    for (int m = 0; m < 3; ++m)
+    {
+      vtkAVSVolumeMapper* mapper = mappers[m];
+      vtkNew<TestErrorObserver> errors;
+      mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+      mapper->SetInputData(volumeData);
+      mapper->SetSampleDistance(sampleDistance);
+      mapper->UseJitteringOff();
+      vtkNew<vtkVolume> volume;
+      volume->SetMapper(mapper);
+      volume->SetProperty(property);
+      renderer->AddVolume(volume);
+      window->Render();
+      auto gpu = Grab(window);
+      renderer->RemoveVolume(volume);
+      AVS_CHECK(errors->Errors == 0);
+
+      vtkNew<vtkVolumeReferenceRenderer> reference;
+      reference->SetInputData(volumeData);
+      reference->SetVolumeProperty(property);
+      reference->SetRenderer(renderer);
+      reference->SetImageSize(size, size);
+      reference->SetSampleDistance(sampleDistance);
+      reference->SetRenderMode(m);
+      reference->SetOcclusionRadius(0.15);
+      reference->SetAmbientRadius(0.08);
+      reference->SetAnisotropy(0.4);
+      reference->SetAlbedo(0.9);
+      reference->Update();
+      const double psnr = Psnr(gpu, reference->GetOutput());
+      const std::string tag = std::string(names[m]) + "_view" + std::to_string(view);
+      std::cout << tag << ": PSNR " << psnr << " dB, brightness GPU " << Brightness(gpu) << " CPU "
+                << Brightness(reference->GetOutput()) << "\n";
+      for (int which = 0; which < 2; ++which)
+      {
+        vtkNew<vtkPNGWriter> writer;
+        writer->SetFileName((dir + "/" + tag + (which ? "_cpu.png" : "_gpu.png")).c_str());
+        writer->SetInputData(which ? reference->GetOutput() : gpu.Get());
+        writer->Write();
+      }
+      AVS_CHECK(Brightness(gpu) > 1000.0);
+      AVS_CHECK(psnr >= 35.0);
+    }
+    camera->ParallelProjectionOff();
   }
   if (failures)
   {
