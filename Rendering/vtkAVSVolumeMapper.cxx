@@ -63,10 +63,13 @@ struct vtkAVSVolumeMapper::Internals
     int AveragedVersion = -1;
     int SliceVersion = -1;
     double Radius = -1.0;
-    avs::Grid Volume;
+    bool Built = false;
+    avs::Grid Volume; ///< CPU path only
   };
   std::vector<LightState> Lights;
   bool LightVolumesUploaded = false;
+  int LightsOnGPU = -1;
+  std::array<int, 3> LightGridDimensions{ 2, 2, 2 };
 
   // Ambient occlusion.
   int OcclusionKey[2] = { -1, -1 };
@@ -271,18 +274,34 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
       !in.OcclusionUploaded)
     {
       this->UpdateProgress(0.0);
-      const avs::Grid ao = avs::ComputeAmbientOcclusion(in.Extinction,
-        g,
-        rp.OcclusionRadius,
-        rp.NumberOfDirections,
-        0.0,
-        nullptr,
-        [this](double v) { this->UpdateProgress(v); });
-      if (!in.RayCaster.UploadOcclusion(ao, error))
+      const bool gpu = this->PrecomputeOnGPU && in.RayCaster.SupportsComputeShaders() &&
+        rp.NumberOfDirections <= 256;
+      if (gpu)
       {
-        vtkErrorMacro("Cannot render: " << error);
-        return false;
+        if (!in.RayCaster.ComputeOcclusion(
+              in.Extinction, rp.OcclusionRadius, rp.NumberOfDirections, error))
+        {
+          vtkErrorMacro("Cannot render: " << error);
+          return false;
+        }
       }
+      else
+      {
+        const avs::Grid ao = avs::ComputeAmbientOcclusion(in.Extinction,
+          g,
+          rp.OcclusionRadius,
+          rp.NumberOfDirections,
+          0.0,
+          nullptr,
+          [this](double v) { this->UpdateProgress(v); });
+        if (!in.RayCaster.UploadOcclusion(ao, error))
+        {
+          vtkErrorMacro("Cannot render: " << error);
+          return false;
+        }
+      }
+      this->OcclusionOnGPU = gpu;
+      this->UpdateProgress(1.0);
       in.OcclusionKey[0] = in.ExtinctionKey[0];
       in.OcclusionKey[1] = in.ExtinctionKey[1];
       in.OcclusionRadius = rp.OcclusionRadius;
@@ -329,11 +348,16 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   }
   const avs::GridGeometry lightGrid =
     g.Resampled(avs::LightVolumeDimensions(g.Dimensions, rp.LightVolumeMaximumDimension));
-  if (in.LightGridMaximum != rp.LightVolumeMaximumDimension)
+  const bool gpu = this->PrecomputeOnGPU && in.RayCaster.SupportsComputeShaders();
+  if (in.LightGridMaximum != rp.LightVolumeMaximumDimension || in.LightsOnGPU != (gpu ? 1 : 0))
   {
     in.Lights.clear();
     in.LightGridMaximum = rp.LightVolumeMaximumDimension;
+    in.LightsOnGPU = gpu ? 1 : 0;
+    in.LightVolumesUploaded = false;
   }
+  in.LightGridDimensions = lightGrid.Dimensions;
+  this->LightVolumesOnGPU = gpu;
   const std::size_t n = in.WorldLights.size();
   bool changed = in.Lights.size() != n || !in.LightVolumesUploaded;
   in.Lights.resize(n);
@@ -343,27 +367,49 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     dataLight.Position = Transform(worldToData, dataLight.Position);
     dataLight.FocalPoint = Transform(worldToData, dataLight.FocalPoint);
     auto& state = in.Lights[j];
-    if (state.Volume.Values.empty() || !SamePose(state.DataFrame, dataLight) ||
+    if (!state.Built || !SamePose(state.DataFrame, dataLight) ||
       state.AveragedVersion != in.AveragedVersion || state.SliceVersion != in.SliceVersion ||
       state.Radius != rp.AmbientRadius)
     {
       this->UpdateProgress(static_cast<double>(j) / n);
-      state.Volume = avs::ComputeLightVolume(in.Averaged,
-        lightGrid,
-        dataLight,
-        in.Slice,
-        rp.AmbientRadius,
-        nullptr,
-        [this, j, n](double v) { this->UpdateProgress((j + v) / static_cast<double>(n)); });
+      if (gpu)
+      {
+        if (!in.RayCaster.ComputeLightVolume(
+              static_cast<int>(j), g, lightGrid, dataLight, rp.AmbientRadius, error))
+        {
+          vtkErrorMacro("Cannot render: " << error);
+          return false;
+        }
+      }
+      else
+      {
+        state.Volume = avs::ComputeLightVolume(in.Averaged,
+          lightGrid,
+          dataLight,
+          in.Slice,
+          rp.AmbientRadius,
+          nullptr,
+          [this, j, n](double v) { this->UpdateProgress((j + v) / static_cast<double>(n)); });
+        changed = true;
+      }
       state.DataFrame = dataLight;
       state.AveragedVersion = in.AveragedVersion;
       state.SliceVersion = in.SliceVersion;
       state.Radius = rp.AmbientRadius;
+      state.Built = true;
       ++this->NumberOfLightVolumeRebuilds;
-      changed = true;
     }
   }
-  if (changed)
+  if (gpu)
+  {
+    in.LightVolumesUploaded = true;
+    if (n == 0 && !in.RayCaster.UploadLightVolumes({}, error))
+    {
+      vtkErrorMacro("Cannot render: " << error);
+      return false;
+    }
+  }
+  else if (changed)
   {
     std::vector<avs::Grid> volumes;
     for (const auto& state : in.Lights)
@@ -411,8 +457,8 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.Parameters = in.Parameters;
   frame.WorldToIndex = in.WorldToIndex;
   frame.Dimensions = in.Scalars.Geometry.Dimensions;
-  frame.LightVolumeDimensions = in.Lights.empty() ? std::array<int, 3>{ 2, 2, 2 }
-                                                  : in.Lights.front().Volume.Geometry.Dimensions;
+  frame.LightVolumeDimensions =
+    in.Lights.empty() ? std::array<int, 3>{ 2, 2, 2 } : in.LightGridDimensions;
   frame.UnitDistance = in.UnitDistance;
   frame.Lights = in.WorldLights;
   frame.Jitter = this->UseJittering != 0;
@@ -432,6 +478,9 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << (this->SampleDistance > 0 ? "" : " (automatic)") << "\n";
   os << indent << "UseJittering: " << (this->UseJittering ? "On" : "Off") << "\n";
   os << indent << "TerminationTransmittance: " << this->TerminationTransmittance << "\n";
+  os << indent << "PrecomputeOnGPU: " << (this->PrecomputeOnGPU ? "On" : "Off") << "\n";
+  os << indent << "LightVolumesOnGPU: " << (this->LightVolumesOnGPU ? "yes" : "no") << "\n";
+  os << indent << "OcclusionOnGPU: " << (this->OcclusionOnGPU ? "yes" : "no") << "\n";
   os << indent << "NumberOfDataUploads: " << this->NumberOfDataUploads << "\n";
   os << indent << "NumberOfExtinctionRebuilds: " << this->NumberOfExtinctionRebuilds << "\n";
   os << indent << "NumberOfLightVolumeRebuilds: " << this->NumberOfLightVolumeRebuilds << "\n";

@@ -66,6 +66,26 @@ public:
 
   ///@{
   /**
+   * Compute the light volumes and the occlusion volume on the GPU (compute shaders, OpenGL 4.3)
+   * when the context allows; otherwise, or when off, the CPU computes them (multi-threaded). The
+   * averaged extinction is computed on the CPU. Default on.
+   */
+  vtkSetMacro(PrecomputeOnGPU, vtkTypeBool);
+  vtkGetMacro(PrecomputeOnGPU, vtkTypeBool);
+  vtkBooleanMacro(PrecomputeOnGPU, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Whether the last light volumes (ambient scattering) or occlusion volume (ambient occlusion)
+   * were computed on the GPU.
+   */
+  vtkGetMacro(LightVolumesOnGPU, vtkTypeBool);
+  vtkGetMacro(OcclusionOnGPU, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
    * How often the mapper converted and uploaded the input scalars, rebuilt the averaged
    * extinction, rebuilt a light volume (one count per light), rebuilt the ambient-occlusion
    * volume, and rendered a frame.
@@ -109,6 +129,9 @@ protected:
   double SampleDistance = 0.0;
   vtkTypeBool UseJittering = 1;
   double TerminationTransmittance = 1.0 / 255.0;
+  vtkTypeBool PrecomputeOnGPU = 1;
+  vtkTypeBool LightVolumesOnGPU = 0;
+  vtkTypeBool OcclusionOnGPU = 0;
 
   int NumberOfDataUploads = 0;
   int NumberOfExtinctionRebuilds = 0;

@@ -2,6 +2,8 @@
 
 #include "vtkAVSShaders.h"
 
+#include "AmbientOcclusion.h"
+
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -253,6 +255,23 @@ bool vtkAVSRayCaster::UploadTableSlice(const avs::ScatteringSlice& slice, std::s
     this->Table = nullptr;
     return false;
   }
+  if (this->LogGain)
+  {
+    this->LogGain->ReleaseGraphicsResources(this->Window);
+  }
+  this->LogGain = vtkSmartPointer<vtkTextureObject>::New();
+  this->LogGain->SetContext(this->Window);
+  ConfigureSampling(this->LogGain);
+  if (!this->LogGain->Create1DFromRaw(static_cast<unsigned int>(slice.LogGain.size()),
+        1,
+        VTK_FLOAT,
+        const_cast<float*>(slice.LogGain.data())))
+  {
+    error = "the GPU could not allocate the forward-transport texture";
+    this->LogGain = nullptr;
+    return false;
+  }
+  this->TauNodes = static_cast<float>(slice.Axes.NumberOfTau);
   this->TableSize[0] = static_cast<float>(slice.Axes.NumberOfTheta);
   this->TableSize[1] = static_cast<float>(slice.Axes.NumberOfTau);
   this->TableTauMaximum = static_cast<float>(slice.Axes.TauMaximum);
@@ -286,6 +305,207 @@ bool vtkAVSRayCaster::EnsureProgram(avs::RenderMode mode)
     return false;
   }
   this->QuadMode = static_cast<int>(mode);
+  return true;
+}
+
+bool vtkAVSRayCaster::SupportsComputeShaders()
+{
+  if (this->ComputeSupport >= 0)
+  {
+    return this->ComputeSupport == 1;
+  }
+  this->ComputeSupport = 0;
+  if (!this->Window)
+  {
+    return false;
+  }
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  if ((major < 4 || (major == 4 && minor < 3)) || !glDispatchCompute || !glBindImageTexture)
+  {
+    return false;
+  }
+  this->ComputeProgram = this->BuildComputeProgram(avs_lightvolume_cs, "light-volume");
+  this->OcclusionProgram = this->BuildComputeProgram(avs_occlusion_cs, "ambient-occlusion");
+  this->ComputeSupport = this->ComputeProgram && this->OcclusionProgram ? 1 : 0;
+  return this->ComputeSupport == 1;
+}
+
+unsigned int vtkAVSRayCaster::BuildComputeProgram(const char* source, const char* what)
+{
+  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok)
+  {
+    char log[2048] = {};
+    glGetShaderInfoLog(shader, sizeof(log) - 1, nullptr, log);
+    vtkGenericWarningMacro("The " << what
+                                  << " compute shader did not compile; the precomputation runs "
+                                     "on the CPU. "
+                                  << log);
+    glDeleteShader(shader);
+    return 0;
+  }
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, shader);
+  glLinkProgram(program);
+  glDeleteShader(shader);
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok)
+  {
+    glDeleteProgram(program);
+    return 0;
+  }
+  return program;
+}
+
+bool vtkAVSRayCaster::ComputeOcclusion(const avs::Grid& extinction,
+  double radius,
+  int directions,
+  std::string& error)
+{
+  if (!this->SupportsComputeShaders() || directions > 256)
+  {
+    error = "no compute shaders, or more than 256 directions";
+    return false;
+  }
+  const avs::GridGeometry& g = extinction.Geometry;
+  vtkSmartPointer<vtkTextureObject> sigma;
+  if (!this->UploadScalarGrid(sigma, extinction, 1, extinction.Values.data(), error))
+  {
+    return false;
+  }
+  std::vector<float> zeros(g.NumberOfPoints(), 0.0f);
+  if (!this->UploadScalarGrid(this->Occlusion, extinction, 1, zeros.data(), error))
+  {
+    sigma->ReleaseGraphicsResources(this->Window);
+    return false;
+  }
+  // The same sampling as the CPU code (Rendering/Core/AmbientOcclusion.cxx).
+  const double step = 0.5 * std::min({ g.Spacing.x, g.Spacing.y, g.Spacing.z });
+  const int n = std::max(1, static_cast<int>(std::ceil(radius / step)));
+  const double h = radius / n;
+  std::vector<float> offsets;
+  for (const avs::Vec3& v : avs::SphereDirections(directions))
+  {
+    const avs::Vec3 l = g.WorldToLocalDirection(v);
+    offsets.push_back(static_cast<float>(l.x * h / g.Spacing.x));
+    offsets.push_back(static_cast<float>(l.y * h / g.Spacing.y));
+    offsets.push_back(static_cast<float>(l.z * h / g.Spacing.z));
+  }
+  const GLuint program = this->OcclusionProgram;
+  this->Window->GetShaderCache()->ReleaseCurrentShader();
+  glUseProgram(program);
+  auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
+  glBindImageTexture(0, this->Occlusion->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+  sigma->Activate();
+  glUniform1i(location("u_extinction"), sigma->GetTextureUnit());
+  const auto& d = g.Dimensions;
+  glUniform3i(location("u_dimensions"), d[0], d[1], d[2]);
+  glUniform1i(location("u_directions"), directions);
+  glUniform1i(location("u_steps"), n);
+  glUniform1f(location("u_step"), static_cast<float>(h));
+  glUniform3fv(location("u_offsets"), directions, offsets.data());
+  glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8),
+    static_cast<GLuint>((d[1] + 7) / 8),
+    static_cast<GLuint>(d[2]));
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+  glUseProgram(0);
+  sigma->Deactivate();
+  sigma->ReleaseGraphicsResources(this->Window);
+  if (const GLenum status = glGetError())
+  {
+    error = "the ambient-occlusion compute pass failed (GL error " + std::to_string(status) + ")";
+    return false;
+  }
+  return true;
+}
+
+bool vtkAVSRayCaster::ComputeLightVolume(int index,
+  const avs::GridGeometry& dataGrid,
+  const avs::GridGeometry& lightGrid,
+  const avs::Light& light,
+  double radius,
+  std::string& error)
+{
+  if (!this->SupportsComputeShaders() || !this->Averaged || !this->LogGain)
+  {
+    error = "no compute shaders, averaged extinction or table slice";
+    return false;
+  }
+  const auto& d = lightGrid.Dimensions;
+  if (!this->LightVolumes[0] || this->ComputedDimensions != d)
+  {
+    // Two packed textures of ones on the light grid.
+    std::vector<float> ones(4 * lightGrid.NumberOfPoints(), 1.0f);
+    for (int t = 0; t < 2; ++t)
+    {
+      avs::Grid shape(lightGrid);
+      if (!this->UploadScalarGrid(this->LightVolumes[t], shape, 4, ones.data(), error))
+      {
+        return false;
+      }
+    }
+    this->ComputedDimensions = d;
+  }
+  const GLuint program = this->ComputeProgram;
+  // The shader cache must rebind its own program afterwards.
+  this->Window->GetShaderCache()->ReleaseCurrentShader();
+  glUseProgram(program);
+  auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
+  glBindImageTexture(
+    0, this->LightVolumes[index / 4]->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glUniform1i(location("u_channel"), index % 4);
+  glUniform3i(location("u_targetDimensions"), d[0], d[1], d[2]);
+  glUniform3f(location("u_targetSpacing"),
+    static_cast<float>(lightGrid.Spacing.x),
+    static_cast<float>(lightGrid.Spacing.y),
+    static_cast<float>(lightGrid.Spacing.z));
+  this->Averaged->Activate();
+  glUniform1i(location("u_averaged"), this->Averaged->GetTextureUnit());
+  glUniform3f(location("u_dataDimensions"),
+    static_cast<float>(dataGrid.Dimensions[0]),
+    static_cast<float>(dataGrid.Dimensions[1]),
+    static_cast<float>(dataGrid.Dimensions[2]));
+  glUniform3f(location("u_dataSpacing"),
+    static_cast<float>(dataGrid.Spacing.x),
+    static_cast<float>(dataGrid.Spacing.y),
+    static_cast<float>(dataGrid.Spacing.z));
+  const avs::Vec3 extent = dataGrid.LocalExtent();
+  glUniform3f(location("u_extent"),
+    static_cast<float>(extent.x),
+    static_cast<float>(extent.y),
+    static_cast<float>(extent.z));
+  this->LogGain->Activate();
+  glUniform1i(location("u_logGain"), this->LogGain->GetTextureUnit());
+  glUniform1f(location("u_tauNodes"), this->TauNodes);
+  glUniform1f(location("u_tauMaximum"), this->TableTauMaximum);
+  glUniform1f(location("u_radius"), static_cast<float>(radius));
+  const bool positional = light.Type == avs::LightType::Positional;
+  const avs::Vec3 l = positional
+    ? dataGrid.WorldToLocal(light.Position)
+    : dataGrid.WorldToLocalDirection(avs::Normalize(light.FocalPoint - light.Position));
+  glUniform1i(location("u_positional"), positional ? 1 : 0);
+  glUniform3f(
+    location("u_light"), static_cast<float>(l.x), static_cast<float>(l.y), static_cast<float>(l.z));
+  glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8),
+    static_cast<GLuint>((d[1] + 7) / 8),
+    static_cast<GLuint>(d[2]));
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glUseProgram(0);
+  this->Averaged->Deactivate();
+  this->LogGain->Deactivate();
+  if (const GLenum status = glGetError())
+  {
+    error = "the light-volume compute pass failed (GL error " + std::to_string(status) + ")";
+    return false;
+  }
   return true;
 }
 

@@ -54,6 +54,25 @@ public:
   bool UploadAveragedExtinction(const avs::Grid& averaged, std::string& error);
   /// Up to 8 light volumes on one grid, packed four to an RGBA texture.
   bool UploadLightVolumes(const std::vector<avs::Grid>& volumes, std::string& error);
+
+  /// Ambient occlusion computed on the GPU from the extinction grid into the occlusion texture
+  /// (at most 256 directions). Returns false when the context cannot, with the reason.
+  bool ComputeOcclusion(const avs::Grid& extinction,
+    double radius,
+    int directions,
+    std::string& error);
+
+  /// Whether the context runs compute shaders (OpenGL 4.3), for the GPU precomputation.
+  bool SupportsComputeShaders();
+  /// Light volumes computed on the GPU: allocates the two packed textures on `lightGrid` (once
+  /// per size), then tube-marches light `index` (< 8, given in the data's frame) into its
+  /// channel. Needs the averaged extinction and the table slice uploaded.
+  bool ComputeLightVolume(int index,
+    const avs::GridGeometry& dataGrid,
+    const avs::GridGeometry& lightGrid,
+    const avs::Light& light,
+    double radius,
+    std::string& error);
   bool UploadOcclusion(const avs::Grid& occlusion, std::string& error);
   bool UploadTableSlice(const avs::ScatteringSlice& slice, std::string& error);
 
@@ -82,14 +101,20 @@ private:
   bool EnsureProgram(avs::RenderMode mode);
   /// Copies the depth of the viewport into Depth (multisampled framebuffers are resolved).
   void CaptureDepth(int x, int y, int width, int height);
+  unsigned int BuildComputeProgram(const char* source, const char* what);
 
   vtkOpenGLRenderWindow* Window = nullptr;
-  vtkSmartPointer<vtkTextureObject> Scalars, Transfer, Averaged, Occlusion, Table, Depth;
+  vtkSmartPointer<vtkTextureObject> Scalars, Transfer, Averaged, Occlusion, Table, Depth, LogGain;
   vtkSmartPointer<vtkTextureObject> LightVolumes[2];
   vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFramebuffer;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   int QuadMode = -1;
   int DepthFormat = 0;
+  unsigned int ComputeProgram = 0;   ///< GL name of the light-volume compute program
+  unsigned int OcclusionProgram = 0; ///< GL name of the ambient-occlusion compute program
+  int ComputeSupport = -1;           ///< -1 unknown, 0 no, 1 yes
+  std::array<int, 3> ComputedDimensions{ 0, 0, 0 };
+  float TauNodes = 2.0f;
   bool DepthWarningGiven = false;
   float TransferSize = 1.0f;
   float ScalarRange[2] = { 0.0f, 1.0f };

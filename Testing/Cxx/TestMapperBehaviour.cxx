@@ -140,6 +140,58 @@ int main(int, char*[])
     }
   }
 
+  // --- Light volumes computed on the GPU (compute shaders) agree with the CPU code they fall
+  // back to, also after a light and the volume moved.
+  {
+    vtkNew<vtkAmbientScatteringVolumeMapper> onGPU;
+    vtkNew<vtkAmbientScatteringVolumeMapper> onCPU;
+    onCPU->PrecomputeOnGPUOff();
+    for (vtkAVSVolumeMapper* m :
+      { static_cast<vtkAVSVolumeMapper*>(onGPU), static_cast<vtkAVSVolumeMapper*>(onCPU) })
+    {
+      m->SetInputData(data);
+      m->UseJitteringOff();
+    }
+    Scene a(onGPU, 96);
+    Scene b(onCPU, 96);
+    for (int step = 0; step < 2; ++step)
+    {
+      const auto pa = a.Render();
+      const auto pb = b.Render();
+      AVS_CHECK(onCPU->GetLightVolumesOnGPU() == 0);
+      std::cout << "light volumes on the GPU: " << (onGPU->GetLightVolumesOnGPU() ? "yes" : "no")
+                << ", PSNR against the CPU's " << Psnr(pa, pb) << " dB\n";
+      AVS_CHECK(Brightness(pa) > 1000.0);
+      AVS_CHECK(Psnr(pa, pb) > 50.0);
+      LightAt(a.Renderer, 1)->SetPosition(-0.2, 0.3, 0.1);
+      LightAt(b.Renderer, 1)->SetPosition(-0.2, 0.3, 0.1);
+      a.Volume->SetPosition(0.05, 0.0, 0.02);
+      b.Volume->SetPosition(0.05, 0.0, 0.02);
+    }
+    AVS_CHECK(onGPU->GetNumberOfLightVolumeRebuilds() == onCPU->GetNumberOfLightVolumeRebuilds());
+  }
+  // The same for the occlusion volume.
+  {
+    vtkNew<vtkAmbientOcclusionVolumeMapper> onGPU;
+    vtkNew<vtkAmbientOcclusionVolumeMapper> onCPU;
+    onCPU->PrecomputeOnGPUOff();
+    for (vtkAmbientOcclusionVolumeMapper* m : { onGPU.Get(), onCPU.Get() })
+    {
+      m->SetInputData(data);
+      m->UseJitteringOff();
+      m->SetOcclusionRadius(0.2);
+    }
+    Scene a(onGPU, 96);
+    Scene b(onCPU, 96);
+    const auto pa = a.Render();
+    const auto pb = b.Render();
+    AVS_CHECK(onCPU->GetOcclusionOnGPU() == 0);
+    std::cout << "occlusion on the GPU: " << (onGPU->GetOcclusionOnGPU() ? "yes" : "no")
+              << ", PSNR against the CPU's " << Psnr(pa, pb) << " dB\n";
+    AVS_CHECK(Brightness(pa) > 1000.0);
+    AVS_CHECK(Psnr(pa, pb) > 50.0);
+  }
+
   // --- Rebuild counters: ambient occlusion.
   {
     vtkNew<vtkAmbientOcclusionVolumeMapper> mapper;

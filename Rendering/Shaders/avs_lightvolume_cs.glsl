@@ -1,0 +1,122 @@
+#version 430
+// Tube marching of one light into one channel of a packed light-volume texture
+// (ALGORITHM.md section 5; the CPU version is Rendering/Core/LightVolume.cxx, which the tests
+// hold this pass against). All positions are in the data's local frame: the volume box is
+// [0, u_extent], axis-aligned.
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+layout(rgba32f, binding = 0) uniform image3D u_target; // four lights, one per channel
+uniform int u_channel;
+uniform ivec3 u_targetDimensions;
+uniform vec3 u_targetSpacing;
+
+uniform sampler3D u_averaged;   // averaged extinction on the data grid (texel centres = voxels)
+uniform vec3 u_dataDimensions;
+uniform vec3 u_dataSpacing;
+uniform vec3 u_extent;
+
+uniform sampler1D u_logGain;    // log(F(tau) exp(2 tau)) on the table's tau nodes
+uniform float u_tauNodes;
+uniform float u_tauMaximum;
+uniform float u_radius;
+
+uniform int u_positional;       // 0: directional, 1: positional
+uniform vec3 u_light;           // propagation direction (directional) or position (positional)
+
+float Averaged(vec3 local)
+{
+  vec3 index = local / u_dataSpacing;
+  if (any(lessThan(index, vec3(-1e-6))) || any(greaterThan(index, u_dataDimensions - 1.0 + 1e-6)))
+  {
+    return 0.0;
+  }
+  return texture(u_averaged, (index + 0.5) / u_dataDimensions).r;
+}
+
+float ForwardTransport(float tau)
+{
+  if (!(tau > 0.0))
+  {
+    return 1.0;
+  }
+  float v = log(1.0 + min(tau, u_tauMaximum)) / log(1.0 + u_tauMaximum) * (u_tauNodes - 1.0);
+  float logGain = texture(u_logGain, (v + 0.5) / u_tauNodes).r;
+  return exp(-2.0 * tau + logGain);
+}
+
+// Entry and exit of the ray o + t d with the box; false when it misses.
+bool Box(vec3 o, vec3 d, out float t0, out float t1)
+{
+  t0 = -1e30;
+  t1 = 1e30;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (abs(d[a]) < 1e-30)
+    {
+      if (o[a] < 0.0 || o[a] > u_extent[a])
+        return false;
+      continue;
+    }
+    float ta = -o[a] / d[a];
+    float tb = (u_extent[a] - o[a]) / d[a];
+    t0 = max(t0, min(ta, tb));
+    t1 = min(t1, max(ta, tb));
+    if (t0 > t1)
+      return false;
+  }
+  return true;
+}
+
+void main()
+{
+  ivec3 voxel = ivec3(gl_GlobalInvocationID);
+  if (any(greaterThanEqual(voxel, u_targetDimensions)))
+  {
+    return;
+  }
+  vec3 x = vec3(voxel) * u_targetSpacing;
+  vec3 x0 = x;
+  float t0, t1;
+  if (u_positional == 0)
+  {
+    if (Box(x, -u_light, t0, t1))
+    {
+      x0 = x - u_light * max(0.0, t1);
+    }
+  }
+  else
+  {
+    vec3 p = u_light;
+    float eps = 1e-9 * (1.0 + length(u_extent));
+    bool inside = all(greaterThanEqual(p, vec3(-eps))) && all(lessThanEqual(p, u_extent + eps));
+    float dist = length(x - p);
+    if (inside)
+    {
+      x0 = p;
+    }
+    else if (dist > 0.0 && Box(p, (x - p) / dist, t0, t1))
+    {
+      x0 = p + (x - p) / dist * clamp(t0, 0.0, dist);
+    }
+  }
+  float D = length(x - x0);
+  float T = 1.0;
+  if (D > 0.0)
+  {
+    vec3 d = (x - x0) / D;
+    float ratio = D / (2.0 * u_radius);
+    int n = int(floor(ratio));
+    float eta = ratio - float(n);
+    float t = 1.0, tn = 1.0;
+    for (int i = 1; i <= n + 1; ++i)
+    {
+      vec3 m = x0 + d * ((2.0 * float(i - 1) + 1.0) * u_radius);
+      tn = t;
+      t *= ForwardTransport(u_radius * Averaged(m));
+    }
+    T = (1.0 - eta) * tn + eta * t;
+  }
+  vec4 value = imageLoad(u_target, voxel);
+  value[u_channel] = T;
+  imageStore(u_target, voxel, value);
+}
