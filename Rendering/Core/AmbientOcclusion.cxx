@@ -1,11 +1,9 @@
 #include "AmbientOcclusion.h"
 
-#include "Parallel.h"
+#include "GridFill.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <thread>
 
 namespace avs
 {
@@ -53,50 +51,31 @@ Grid ComputeAmbientOcclusion(const Grid& sigmaT,
         { l.x * t / source.Spacing.x, l.y * t / source.Spacing.y, l.z * t / source.Spacing.z });
     }
   }
-  Grid out(target, 1.0f);
-  const auto& dims = target.Dimensions;
-  std::atomic<std::uint64_t> samples{ 0 };
-  std::atomic<int> slicesDone{ 0 };
-  const std::thread::id caller = std::this_thread::get_id();
-  ParallelFor(dims[2],
-    [&](std::int64_t b, std::int64_t e)
+  std::uint64_t samples = 0;
+  Grid out = FillGrid(
+    target,
+    [&](const Vec3& world, std::uint64_t& work)
     {
-      std::uint64_t local = 0;
-      for (std::int64_t k = b; k < e; ++k)
+      const Vec3 base = source.WorldToIndex(world);
+      double sum = 0.0;
+      std::size_t o = 0;
+      for (std::size_t d = 0; d < dirs.size(); ++d)
       {
-        for (int j = 0; j < dims[1]; ++j)
+        double optical = 0.0;
+        for (int s = 0; s < n; ++s, ++o)
         {
-          for (int i = 0; i < dims[0]; ++i)
-          {
-            const Vec3 world = target.IndexToWorld(
-              { static_cast<double>(i), static_cast<double>(j), static_cast<double>(k) });
-            const Vec3 base = source.WorldToIndex(world);
-            double sum = 0.0;
-            std::size_t o = 0;
-            for (std::size_t d = 0; d < dirs.size(); ++d)
-            {
-              double optical = 0.0;
-              for (int s = 0; s < n; ++s, ++o)
-              {
-                optical += sigmaT.SampleIndex(base + offsets[o], 0.0);
-              }
-              sum += std::exp(-optical * h);
-            }
-            local += offsets.size();
-            out.At(i, j, static_cast<int>(k)) = static_cast<float>(sum / dirs.size());
-          }
+          optical += sigmaT.SampleIndex(base + offsets[o], 0.0);
         }
-        const int done = ++slicesDone;
-        if (progress && std::this_thread::get_id() == caller)
-        {
-          progress(static_cast<double>(done) / dims[2]);
-        }
+        sum += std::exp(-optical * h);
       }
-      samples += local;
-    });
+      work += offsets.size();
+      return sum / dirs.size();
+    },
+    &samples,
+    progress);
   if (statistics)
   {
-    statistics->Samples = samples.load();
+    statistics->Samples = samples;
   }
   return out;
 }

@@ -1,11 +1,9 @@
 #include "LightVolume.h"
 
-#include "Parallel.h"
+#include "GridFill.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <thread>
 
 namespace avs
 {
@@ -135,39 +133,16 @@ Grid ComputeLightVolume(const Grid& averaged,
   LightVolumeStatistics* statistics,
   const std::function<void(double)>& progress)
 {
-  Grid out(target, 1.0f);
-  const auto& dims = target.Dimensions;
-  std::atomic<std::uint64_t> steps{ 0 };
-  std::atomic<int> slicesDone{ 0 };
-  const std::thread::id caller = std::this_thread::get_id();
-  ParallelFor(dims[2],
-    [&](std::int64_t b, std::int64_t e)
-    {
-      std::uint64_t local = 0;
-      for (std::int64_t k = b; k < e; ++k)
-      {
-        for (int j = 0; j < dims[1]; ++j)
-        {
-          for (int i = 0; i < dims[0]; ++i)
-          {
-            const Vec3 world = target.IndexToWorld(
-              { static_cast<double>(i), static_cast<double>(j), static_cast<double>(k) });
-            out.At(i, j, static_cast<int>(k)) =
-              static_cast<float>(TubeTransmittance(averaged, light, slice, radius, world, &local));
-          }
-        }
-        const int done = ++slicesDone;
-        // Progress is reported from the calling thread only (VTK observers are not thread-safe).
-        if (progress && std::this_thread::get_id() == caller)
-        {
-          progress(static_cast<double>(done) / dims[2]);
-        }
-      }
-      steps += local;
-    });
+  std::uint64_t steps = 0;
+  Grid out = FillGrid(
+    target,
+    [&](const Vec3& world, std::uint64_t& work)
+    { return TubeTransmittance(averaged, light, slice, radius, world, &work); },
+    &steps,
+    progress);
   if (statistics)
   {
-    statistics->Steps = steps.load();
+    statistics->Steps = steps;
   }
   return out;
 }

@@ -1,6 +1,6 @@
 #include "ProceduralVolume.h"
 
-#include "Parallel.h"
+#include "GridFill.h"
 #include "Random.h"
 
 #include <algorithm>
@@ -42,26 +42,8 @@ Grid MakeGrid(int n)
 template<typename Density>
 Grid Fill(int n, Density density)
 {
-  Grid grid = MakeGrid(n);
-  const auto& g = grid.Geometry;
-  ParallelFor(g.Dimensions[2],
-    [&](std::int64_t b, std::int64_t e)
-    {
-      for (std::int64_t k = b; k < e; ++k)
-      {
-        for (int j = 0; j < g.Dimensions[1]; ++j)
-        {
-          for (int i = 0; i < g.Dimensions[0]; ++i)
-          {
-            const Vec3 p = g.IndexToWorld(
-              { static_cast<double>(i), static_cast<double>(j), static_cast<double>(k) });
-            grid.At(i, j, static_cast<int>(k)) =
-              static_cast<float>(std::clamp(density(p), 0.0, 1.0));
-          }
-        }
-      }
-    });
-  return grid;
+  return FillGrid(MakeGrid(n).Geometry,
+    [&](const Vec3& p, std::uint64_t&) { return std::clamp(density(p), 0.0, 1.0); });
 }
 } // namespace
 

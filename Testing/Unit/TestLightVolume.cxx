@@ -4,6 +4,8 @@
 #include "LightVolume.h"
 #include "ScatteringTable.h"
 
+#include "ShippedTable.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,19 +14,6 @@ using namespace avs;
 
 namespace
 {
-const ScatteringTable& Shipped()
-{
-  static ScatteringTable table;
-  static bool loaded = false;
-  if (!loaded)
-  {
-    std::string error;
-    loaded = table.Read(AVS_SOURCE_TABLE_PATH, &error);
-    EXPECT_TRUE(loaded) << error;
-  }
-  return table;
-}
-
 GridGeometry Box(int n, double spacing = 1.0)
 {
   GridGeometry g;

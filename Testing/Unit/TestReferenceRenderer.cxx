@@ -4,6 +4,8 @@
 
 #include "Extinction.h"
 
+#include "ShippedTable.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,19 +14,6 @@ using namespace avs;
 
 namespace
 {
-const ScatteringTable& Shipped()
-{
-  static ScatteringTable table;
-  static bool loaded = false;
-  if (!loaded)
-  {
-    std::string error;
-    loaded = table.Read(AVS_SOURCE_TABLE_PATH, &error);
-    EXPECT_TRUE(loaded) << error;
-  }
-  return table;
-}
-
 // A homogeneous box [0, 10] x [0, 10] x [0, depth] with scalar 1.
 VolumeScene Slab(double alpha, double unitDistance, double depth, const Vec3& color)
 {

@@ -3,6 +3,8 @@
 #include "PhaseFunction.h"
 #include "ScatteringTable.h"
 
+#include "ShippedTable.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,19 +15,6 @@ using namespace avs;
 
 namespace
 {
-const ScatteringTable& Shipped()
-{
-  static ScatteringTable table;
-  static bool loaded = false;
-  if (!loaded)
-  {
-    std::string error;
-    loaded = table.Read(AVS_SOURCE_TABLE_PATH, &error);
-    EXPECT_TRUE(loaded) << error;
-  }
-  return table;
-}
-
 std::string TempFile(const char* name)
 {
   return std::string(::testing::TempDir()) + "/" + name;
