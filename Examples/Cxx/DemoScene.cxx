@@ -18,6 +18,9 @@
 #include "vtkStructuredPointsReader.h"
 #include "vtkVolumeProperty.h"
 #include "vtkXMLImageDataReader.h"
+#ifdef AVS_HAVE_OPENVDB
+#include "vtkOpenVDBImageReader.h"
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -143,10 +146,24 @@ bool LoadDemoScene(const std::string& fileName, DemoScene& scene, std::string& e
     r->Update();
     image = r->GetOutput();
   }
+#ifdef AVS_HAVE_OPENVDB
+  else if (EndsWith(fileName, ".vdb"))
+  {
+    vtkNew<vtkOpenVDBImageReader> r;
+    r->SetFileName(fileName.c_str());
+    r->LevelSetToFogVolumeOn(); // a level set's signed distance is no density
+    r->Update();
+    image = r->GetOutput();
+  }
+#endif
   else
   {
     error = "unsupported file type '" + fileName +
-      "' (this build reads .vti, .vtk, .slc, .nhdr and .nrrd volumes)";
+      "' (this build reads .vti, .vtk, .slc, .nhdr, .nrrd"
+#ifdef AVS_HAVE_OPENVDB
+      " and .vdb"
+#endif
+      " volumes)";
     return false;
   }
   if (!image || image->GetNumberOfPoints() == 0 || !image->GetPointData()->GetScalars())

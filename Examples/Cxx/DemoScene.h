@@ -21,7 +21,8 @@ struct DemoScene
 /// The procedural nebula with n^3 voxels.
 DemoScene MakeDemoScene(int n);
 
-/// A volume read from `fileName` (.vti, .vtk, .slc, .nhdr/.nrrd). Returns false and sets
+/// A volume read from `fileName` (.vti, .vtk, .slc, .nhdr/.nrrd, and .vdb when built with
+/// OpenVDB: its default grid, level sets converted to fog volumes). Returns false and sets
 /// `error` when the file cannot be read.
 bool LoadDemoScene(const std::string& fileName, DemoScene& scene, std::string& error);
 

@@ -52,17 +52,18 @@ public:
 
 void Usage()
 {
-  std::printf("Usage: avs-demo [--size N] [--voxels N] [--output DIR] [--reference] [FILE]\n"
-              "\n"
-              "Renders the built-in procedural nebula (or FILE: .vti, .vtk, .slc, .nhdr, .nrrd)\n"
-              "with emission-absorption, ambient occlusion and ambient scattering using the GPU\n"
-              "mappers, and writes ea.png, ao.png, as.png and the three side by side\n"
-              "(side_by_side.png) into DIR.\n"
-              "\n"
-              "  --size N     picture size in pixels, per mapper [256]\n"
-              "  --voxels N   voxels per axis of the built-in nebula [128]\n"
-              "  --output DIR output folder [build/demo]\n"
-              "  --reference  render with the CPU reference ray caster instead\n");
+  std::printf(
+    "Usage: avs-demo [--size N] [--voxels N] [--output DIR] [--reference] [FILE]\n"
+    "\n"
+    "Renders the built-in procedural nebula (or FILE: .vti, .vtk, .slc, .nhdr, .nrrd, .vdb)\n"
+    "with emission-absorption, ambient occlusion and ambient scattering using the GPU\n"
+    "mappers, and writes ea.png, ao.png, as.png and the three side by side\n"
+    "(side_by_side.png) into DIR.\n"
+    "\n"
+    "  --size N     picture size in pixels, per mapper [256]\n"
+    "  --voxels N   voxels per axis of the built-in nebula [128]\n"
+    "  --output DIR output folder [build/demo]\n"
+    "  --reference  render with the CPU reference ray caster instead\n");
 }
 
 // The three GPU mappers in one window with three viewports sharing the camera and the lights.
