@@ -419,20 +419,24 @@ int vtkOpenVDBImageReader::RequestInformation(vtkInformation*,
       axes[a][r] = d[r] / length;
     }
   }
+  // Sheared (general affine) maps keep their axes in the direction matrix, which is then not
+  // orthonormal; VTK's image data carries that, though volume mappers may refuse it.
+  bool sheared = false;
   for (int a = 0; a < 3; ++a)
   {
     for (int b = a + 1; b < 3; ++b)
     {
       const double dot =
         axes[a][0] * axes[b][0] + axes[a][1] * axes[b][1] + axes[a][2] * axes[b][2];
-      if (std::abs(dot) > 1e-6)
-      {
-        in.Grid.reset();
-        return fail("grid '" + chosen +
-          "' has a sheared transform, which image data cannot "
-          "represent");
-      }
+      sheared = sheared || std::abs(dot) > 1e-6;
     }
+  }
+  if (sheared)
+  {
+    vtkWarningMacro("Grid '" << chosen
+                             << "' has a sheared transform: the image's direction "
+                                "matrix is not orthonormal, which volume mappers "
+                                "(these and VTK's) may refuse.");
   }
   for (int r = 0; r < 3; ++r)
   {

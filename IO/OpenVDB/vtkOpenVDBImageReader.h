@@ -12,8 +12,10 @@
  *   0/1), and Vec3 float/double grids as their magnitude (default) or as three components;
  * - level sets: the signed distance as stored, or a fog volume (LevelSetToFogVolume: 1 inside,
  *   falling to 0 across the narrow band outside, OpenVDB's sdfToFogVolume);
- * - the index-to-world transform: translation to the origin, scales to the spacing, rotations to
- *   the direction matrix; sheared and non-linear (frustum) transforms are refused with an error;
+ * - the index-to-world transform: translation to the origin, the lengths of the index axes to
+ *   the spacing, their directions to the direction matrix (rotations give an orthonormal one;
+ *   general affine maps with shear a non-orthonormal one, with a warning, since volume mappers
+ *   need orthonormal directions); non-linear (frustum) transforms are refused with an error;
  * - the extent: the grid's active voxel bounding box (leaf voxels and active tiles), inclusive,
  *   or a user index box (UseBoundingBox, BoundingBox); voxels that are not stored read as the
  *   grid's background value;

@@ -168,18 +168,50 @@ TEST_F(OpenVDBReader, RotatedAndAnisotropicallyScaledGrid)
   EXPECT_NEAR(out->GetDirectionMatrix()->GetElement(1, 0), std::sin(0.5235987755982988), 1e-12);
 }
 
-TEST_F(OpenVDBReader, ShearedTransformIsRefused)
+TEST_F(OpenVDBReader, GeneralAffineMapGoesIntoTheDirectionMatrix)
 {
   auto grid = openvdb::FloatGrid::create(0.0f);
   openvdb::math::Mat4d m = openvdb::math::Mat4d::identity();
-  m(1, 0) = 0.5; // shear
+  m(1, 0) = 0.5; // shear: index y moves world x
+  m.preScale(openvdb::Vec3d(0.5, 2.0, 1.0));
+  m.postTranslate(openvdb::Vec3d(1, 2, 3));
   grid->setTransform(openvdb::math::Transform::createLinearTransform(m));
   grid->tree().setValue(openvdb::Coord(0, 0, 0), 1.0f);
+  grid->tree().setValue(openvdb::Coord(4, 3, 2), 2.0f);
   Write(Path("shear.vdb"), { grid });
   Reader r(Path("shear.vdb"));
+  vtkImageData* out = r.Read();
+  EXPECT_EQ(r.Errors->Errors, 0);
+  EXPECT_EQ(r.Errors->Warnings, 1); // not orthonormal
+  ASSERT_GT(out->GetNumberOfPoints(), 0);
+  // Every voxel lands where OpenVDB puts it.
+  for (const openvdb::Coord ijk :
+    { openvdb::Coord(0, 0, 0), openvdb::Coord(4, 3, 2), openvdb::Coord(1, 3, 0) })
+  {
+    const openvdb::Vec3d expected = grid->indexToWorld(ijk);
+    const double index[3] = { double(ijk.x()), double(ijk.y()), double(ijk.z()) };
+    double p[3];
+    out->TransformContinuousIndexToPhysicalPoint(index, p);
+    for (int a = 0; a < 3; ++a)
+    {
+      EXPECT_NEAR(p[a], expected[a], 1e-9);
+    }
+  }
+  EXPECT_FLOAT_EQ(r.At(4, 3, 2), 2.0f);
+}
+
+TEST_F(OpenVDBReader, NonLinearTransformIsRefused)
+{
+  auto grid = openvdb::FloatGrid::create(0.0f);
+  grid->setName("density");
+  const openvdb::BBoxd box(openvdb::Vec3d(0, 0, 0), openvdb::Vec3d(10, 10, 10));
+  grid->setTransform(openvdb::math::Transform::createFrustumTransform(box, 0.5, 2.0, 0.1));
+  grid->tree().setValue(openvdb::Coord(1, 1, 1), 1.0f);
+  Write(Path("frustum.vdb"), { grid });
+  Reader r(Path("frustum.vdb"));
   EXPECT_EQ(r.Read()->GetNumberOfPoints(), 0);
   EXPECT_EQ(r.Errors->Errors, 1);
-  EXPECT_NE(r.Errors->LastError.find("sheared"), std::string::npos);
+  EXPECT_NE(r.Errors->LastError.find("non-linear"), std::string::npos);
 }
 
 TEST_F(OpenVDBReader, ActiveTilesAndTheBackgroundValue)
