@@ -1,5 +1,6 @@
 #include "vtkVolumeReferenceRenderer.h"
 
+#include "PathTracer.h"
 #include "ReferenceRenderer.h"
 #include "vtkAVSSceneTranslator.h"
 #include "vtkAmbientScatteringTable.h"
@@ -51,6 +52,8 @@ const char* vtkVolumeReferenceRenderer::GetRenderModeAsString()
       return "EmissionAbsorption";
     case AMBIENT_OCCLUSION:
       return "AmbientOcclusion";
+    case PATH_TRACING:
+      return "PathTracing";
     default:
       return "AmbientScattering";
   }
@@ -169,7 +172,7 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
     : (this->RenderMode == AMBIENT_OCCLUSION ? avs::RenderMode::AmbientOcclusion
                                              : avs::RenderMode::AmbientScattering);
   const avs::ScatteringTable* table = nullptr;
-  if (mode == avs::RenderMode::AmbientScattering)
+  if (this->RenderMode == AMBIENT_SCATTERING)
   {
     if (!this->ScatteringTable)
     {
@@ -198,7 +201,27 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
   parameters.LightVolumeMaximumDimension = this->LightVolumeMaximumDimension;
   const avs::ScatteringParameters resolved = parameters.Resolve(scene.Scalars.Geometry);
 
+  const int w = std::max(1, this->ImageSize[0]);
+  const int h = std::max(1, this->ImageSize[1]);
+  avs::Image image;
   this->UpdateProgress(0.0);
+  if (this->RenderMode == PATH_TRACING)
+  {
+    avs::PathTracerSettings settings;
+    settings.SamplesPerPixel = this->SamplesPerPixel;
+    settings.Seed = static_cast<std::uint64_t>(static_cast<std::uint32_t>(this->Seed));
+    image = avs::RenderPathTraced(scene,
+      resolved,
+      settings,
+      vtkAVSSceneTranslator::ToCamera(camera),
+      w,
+      h,
+      nullptr,
+      [this](double v) { this->UpdateProgress(v); });
+    this->WriteOutput(output, image, scene.Background);
+    this->UpdateProgress(1.0);
+    return 1;
+  }
   avs::PrecomputedVolumes volumes;
   if (!avs::Precompute(scene,
         resolved,
@@ -211,9 +234,7 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
     vtkErrorMacro("Cannot render: " << error);
     return 1;
   }
-  const int w = std::max(1, this->ImageSize[0]);
-  const int h = std::max(1, this->ImageSize[1]);
-  const avs::Image image = avs::RenderReference(scene,
+  image = avs::RenderReference(scene,
     resolved,
     volumes,
     mode,
@@ -222,6 +243,16 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
     h,
     [this](double v) { this->UpdateProgress(0.5 + 0.5 * v); });
 
+  this->WriteOutput(output, image, scene.Background);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkVolumeReferenceRenderer::WriteOutput(vtkImageData* output,
+  const avs::Image& image,
+  const avs::Vec3& background)
+{
+  const int w = image.Width, h = image.Height;
   output->SetExtent(0, w - 1, 0, h - 1, 0, 0);
   output->SetSpacing(1, 1, 1);
   output->SetOrigin(0, 0, 0);
@@ -238,7 +269,7 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
     for (int x = 0; x < w; ++x)
     {
       const vtkIdType id = static_cast<vtkIdType>(y) * w + x;
-      const avs::Vec3 c = image.Composited(x, y, scene.Background);
+      const avs::Vec3 c = image.Composited(x, y, background);
       for (int k = 0; k < 3; ++k)
       {
         const double v = std::clamp(c[k], 0.0, 1.0);
@@ -253,8 +284,6 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
   }
   output->GetPointData()->SetScalars(rgb);
   output->GetPointData()->AddArray(radiance);
-  this->UpdateProgress(1.0);
-  return 1;
 }
 
 void vtkVolumeReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
@@ -282,4 +311,6 @@ void vtkVolumeReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
      << (this->SampleDistance > 0 ? "" : " (automatic)") << "\n";
   os << indent << "TerminationTransmittance: " << this->TerminationTransmittance << "\n";
   os << indent << "LightVolumeMaximumDimension: " << this->LightVolumeMaximumDimension << "\n";
+  os << indent << "SamplesPerPixel: " << this->SamplesPerPixel << "\n";
+  os << indent << "Seed: " << this->Seed << "\n";
 }

@@ -5,8 +5,9 @@
  * An image algorithm: its input is the volume (vtkImageData with single-component point
  * scalars, any type), its output a picture of it as a renderer's camera and lights see it. It
  * runs the project's double-precision reference ray caster (ALGORITHM.md sections 2-7):
- * emission–absorption, volumetric ambient occlusion or ambient volume scattering. The GPU
- * mappers are measured against it; it is also the renderer of `./avs demo` where no GPU mapper
+ * emission–absorption, volumetric ambient occlusion or ambient volume scattering; or it
+ * path-traces the same scene without approximation (PATH_TRACING). The GPU mappers are measured
+ * against it; it is also the renderer of `./avs demo` where no GPU mapper
  * is wanted.
  *
  * The output has ImageSize pixels, 3-component unsigned char scalars "RGB" (the volume
@@ -26,6 +27,12 @@
 #include <memory> // for std::unique_ptr
 
 class vtkAmbientScatteringTable;
+class vtkImageData;
+namespace avs
+{
+struct Image;
+struct Vec3;
+}
 class vtkCamera;
 class vtkRenderer;
 class vtkVolumeProperty;
@@ -41,18 +48,22 @@ public:
   {
     EMISSION_ABSORPTION = 0,
     AMBIENT_OCCLUSION = 1,
-    AMBIENT_SCATTERING = 2
+    AMBIENT_SCATTERING = 2,
+    PATH_TRACING = 3
   };
 
   ///@{
   /**
-   * What to render. Default: AMBIENT_SCATTERING.
+   * What to render. Default: AMBIENT_SCATTERING. PATH_TRACING solves the full radiative
+   * transfer of the same medium (albedo, anisotropy, emission weight, lights) with the unbiased
+   * path tracer: the ground truth the other models are measured against.
    */
-  vtkSetClampMacro(RenderMode, int, EMISSION_ABSORPTION, AMBIENT_SCATTERING);
+  vtkSetClampMacro(RenderMode, int, EMISSION_ABSORPTION, PATH_TRACING);
   vtkGetMacro(RenderMode, int);
   void SetRenderModeToEmissionAbsorption() { this->SetRenderMode(EMISSION_ABSORPTION); }
   void SetRenderModeToAmbientOcclusion() { this->SetRenderMode(AMBIENT_OCCLUSION); }
   void SetRenderModeToAmbientScattering() { this->SetRenderMode(AMBIENT_SCATTERING); }
+  void SetRenderModeToPathTracing() { this->SetRenderMode(PATH_TRACING); }
   const char* GetRenderModeAsString();
   ///@}
 
@@ -195,6 +206,17 @@ public:
   vtkGetMacro(LightVolumeMaximumDimension, int);
   ///@}
 
+  ///@{
+  /**
+   * Path tracing: samples per pixel (default 64) and the random seed (default 1; the same seed
+   * gives the same picture).
+   */
+  vtkSetClampMacro(SamplesPerPixel, int, 1, 1 << 20);
+  vtkGetMacro(SamplesPerPixel, int);
+  vtkSetMacro(Seed, int);
+  vtkGetMacro(Seed, int);
+  ///@}
+
   /**
    * Includes the property's, the camera's, the renderer's and the lights' modification times.
    */
@@ -227,8 +249,11 @@ protected:
   double SampleDistance = 0.0;
   double TerminationTransmittance = 1.0 / 255.0;
   int LightVolumeMaximumDimension = 256;
+  int SamplesPerPixel = 64;
+  int Seed = 1;
 
 private:
+  void WriteOutput(vtkImageData* output, const avs::Image& image, const avs::Vec3& background);
   vtkVolumeReferenceRenderer(const vtkVolumeReferenceRenderer&) = delete;
   void operator=(const vtkVolumeReferenceRenderer&) = delete;
 };

@@ -71,6 +71,20 @@ def main():
         check(0.0 < radiance.GetComponent(20 * 40 + 20, 3) <= 1.0, mode + ": bad alpha")
     check(progress and max(progress) == 1.0, "no progress events")
 
+    # The path tracer, the ground truth, from the same pipeline: deterministic for a seed.
+    filt.SetRenderModeToPathTracing()
+    filt.SetSamplesPerPixel(8)
+    filt.SetSeed(7)
+    filt.Update()
+    traced = filt.GetOutput().GetPointData().GetArray("Radiance")
+    first = [traced.GetComponent(i, 0) for i in range(traced.GetNumberOfTuples())]
+    check(sum(first) > 0, "path tracing: blank picture")
+    filt.Modified()
+    filt.Update()
+    traced = filt.GetOutput().GetPointData().GetArray("Radiance")
+    check(first == [traced.GetComponent(i, 0) for i in range(traced.GetNumberOfTuples())],
+          "path tracing: the same seed gave another picture")
+
     # More albedo, more scattered light.
     filt.SetRenderModeToAmbientScattering()
     filt.SetAlbedo(0.2)

@@ -1,0 +1,88 @@
+// The unbiased reference (ALGORITHM.md sections 1 and 8): a volumetric path tracer for the full
+// radiative transfer equation of the medium the mappers approximate. Delta tracking over a
+// majorant grid samples free flights, ratio tracking estimates the transmittance of next-event
+// estimation to every light (directional, point, spot), directions come from the
+// Henyey–Greenstein phase function, the albedo is chromatic (albedo times the colour), the medium
+// emits k_e (1 - albedo) sigma_t c, and Russian roulette ends paths. Deterministic for a seed
+// whatever the threads, progressive (one sample per pixel per pass), same camera as the mappers.
+#ifndef avs_PathTracer_h
+#define avs_PathTracer_h
+
+#include "Camera.h"
+#include "MajorantGrid.h"
+#include "ReferenceRenderer.h"
+#include "ScatteringParameters.h"
+
+#include <cstdint>
+#include <functional>
+
+namespace avs
+{
+
+struct PathTracerSettings
+{
+  int SamplesPerPixel = 64;
+  std::uint64_t Seed = 1;
+  int MajorantCellSize = 8; ///< voxels per majorant cell and axis
+  int RouletteDepth = 4;    ///< bounces before Russian roulette starts
+  int MaximumBounces = 100000;
+};
+
+struct PathTracerStatistics
+{
+  std::uint64_t Paths = 0;
+  std::uint64_t RealCollisions = 0;
+  std::uint64_t NullCollisions = 0; ///< tentative collisions of delta and ratio tracking
+};
+
+/// Renders `scene` with the medium parameters of `parameters` (albedo, anisotropy, emission
+/// weight; resolved). As the reference renderer's: RGB the radiance the volume sends to the
+/// camera (the environment is black), A the share of primary rays that collided (an unbiased
+/// estimate of 1 - transmittance), so Image::Composited puts it over a background. `progress` gets
+/// the fraction of passes done, from the calling thread.
+Image RenderPathTraced(const VolumeScene& scene,
+  const ScatteringParameters& parameters,
+  const PathTracerSettings& settings,
+  const Camera& camera,
+  int width,
+  int height,
+  PathTracerStatistics* statistics = nullptr,
+  const std::function<void(double)>& progress = {});
+
+/// Tools of the path tracer, exposed for the tests.
+class VolumeTracker
+{
+public:
+  VolumeTracker(const VolumeScene& scene, const MajorantGrid& majorants);
+
+  /// Delta tracking from world point `origin` along unit `direction` up to world distance
+  /// `maximum` (and the volume box): returns the distance of a real collision, or a negative
+  /// value when the ray leaves without one.
+  double SampleCollision(const Vec3& origin,
+    const Vec3& direction,
+    double maximum,
+    class Random& rng,
+    PathTracerStatistics& stats) const;
+  /// Ratio tracking: an unbiased estimate of the transmittance along the segment.
+  double Transmittance(const Vec3& origin,
+    const Vec3& direction,
+    double maximum,
+    class Random& rng,
+    PathTracerStatistics& stats) const;
+  /// sigma_t and colour at a world point (zero outside the volume).
+  double Extinction(const Vec3& world, Vec3* color = nullptr) const;
+
+private:
+  template<typename Visit>
+  void Walk(const Vec3& origin,
+    const Vec3& direction,
+    double maximum,
+    class Random& rng,
+    Visit&& visit) const;
+  const VolumeScene& Scene;
+  const MajorantGrid& Majorants;
+};
+
+} // namespace avs
+
+#endif
