@@ -1,0 +1,378 @@
+#include "AccuracyStudy.h"
+
+#include "PathTracer.h"
+#include "ProceduralVolume.h"
+
+#include "vtkAVSSceneTranslator.h"
+#include "vtkAmbientOcclusionVolumeMapper.h"
+#include "vtkAmbientScatteringVolumeMapper.h"
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkEmissionAbsorptionVolumeMapper.h"
+#include "vtkFloatArray.h"
+#include "vtkImageAppend.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace
+{
+struct StudyScene
+{
+  std::string Name;
+  avs::Grid Density;
+  vtkSmartPointer<vtkVolumeProperty> Property;
+  double Albedo = 0.9;
+  double Anisotropy = 0.0;
+  std::vector<vtkSmartPointer<vtkLight>> Lights;
+};
+
+vtkSmartPointer<vtkLight> Directional(const avs::Vec3& from,
+  double intensity,
+  const avs::Vec3& color)
+{
+  auto l = vtkSmartPointer<vtkLight>::New();
+  l->SetLightTypeToSceneLight();
+  l->SetPositional(false);
+  l->SetPosition(from.x, from.y, from.z);
+  l->SetFocalPoint(0, 0, 0);
+  l->SetDiffuseColor(color.x, color.y, color.z);
+  l->SetIntensity(intensity);
+  return l;
+}
+
+vtkSmartPointer<vtkVolumeProperty> Property(double opacity,
+  double unitDistance,
+  const std::vector<std::pair<double, avs::Vec3>>& colors,
+  double threshold)
+{
+  auto p = vtkSmartPointer<vtkVolumeProperty>::New();
+  vtkNew<vtkColorTransferFunction> c;
+  for (const auto& [s, rgb] : colors)
+  {
+    c->AddRGBPoint(s, rgb.x, rgb.y, rgb.z);
+  }
+  vtkNew<vtkPiecewiseFunction> o;
+  o->AddPoint(0.0, 0.0);
+  o->AddPoint(threshold, 0.0);
+  o->AddPoint(1.0, opacity);
+  p->SetColor(c);
+  p->SetScalarOpacity(o);
+  p->SetScalarOpacityUnitDistance(unitDistance);
+  p->SetInterpolationTypeToLinear();
+  return p;
+}
+
+// A dense, medical-like volume: a thick ellipsoidal shell (bone-like) around a lumpy interior.
+avs::Grid MakeDense(int n)
+{
+  avs::Grid g = avs::MakeCloud(n, 3);
+  const auto& geo = g.Geometry;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+      {
+        const avs::Vec3 p = geo.IndexToWorld({ double(i), double(j), double(k) });
+        const double r = avs::Length(avs::Vec3{ p.x / 0.85, p.y / 0.7, p.z / 0.8 });
+        const double shell = std::abs(r - 0.85) < 0.06 ? 1.0 : 0.0;
+        const double inside = r < 0.8 ? 0.35 + 0.4 * avs::FractalNoise(p * 4.0, 3, 21) : 0.0;
+        g.At(i, j, k) = static_cast<float>(std::max(shell, inside));
+      }
+  return g;
+}
+
+StudyScene MakeScene(const std::string& name, int voxels)
+{
+  StudyScene s;
+  s.Name = name;
+  const avs::Vec3 white{ 1, 1, 1 };
+  if (name == "cloud_back" || name == "cloud_side")
+  {
+    s.Density = avs::MakeCloud(voxels);
+    s.Property = Property(0.6, 2.0 / 40.0, { { 0.0, white }, { 1.0, white } }, 0.05);
+    s.Albedo = 0.95;
+    s.Anisotropy = 0.6;
+    s.Lights.push_back(name == "cloud_back" ? Directional({ -0.3, 0.6, -1.0 }, 9.0, white)
+                                            : Directional({ -1.0, 0.25, 0.1 }, 9.0, white));
+  }
+  else if (name == "nebula_point")
+  {
+    s.Density = avs::MakeNebula(voxels);
+    s.Property = Property(0.45,
+      2.0 / 40.0,
+      { { 0.0, { 0.3, 0.4, 0.9 } }, { 0.5, { 0.8, 0.6, 0.9 } }, { 1.0, { 1.0, 0.85, 0.6 } } },
+      0.05);
+    s.Albedo = 0.9;
+    s.Anisotropy = 0.2;
+    auto lamp = vtkSmartPointer<vtkLight>::New();
+    lamp->SetLightTypeToSceneLight();
+    lamp->SetPositional(true);
+    lamp->SetConeAngle(180);
+    lamp->SetPosition(0, 0, 0);
+    lamp->SetFocalPoint(0, 0, -1);
+    lamp->SetDiffuseColor(1.0, 0.85, 0.6);
+    lamp->SetIntensity(3.0);
+    lamp->SetAttenuationValues(0.2, 0.0, 4.0);
+    s.Lights.push_back(lamp);
+  }
+  else // dense_medical
+  {
+    s.Density = MakeDense(voxels);
+    s.Property = Property(0.8,
+      2.0 / 60.0,
+      { { 0.0, { 0.9, 0.6, 0.5 } }, { 0.6, { 0.95, 0.75, 0.65 } }, { 1.0, white } },
+      0.2);
+    s.Albedo = 0.5;
+    s.Anisotropy = 0.0;
+    s.Lights.push_back(Directional({ -0.6, 0.8, 0.6 }, 10.0, white));
+    s.Lights.push_back(Directional({ 0.4, -0.2, 1.0 }, 5.0, white));
+  }
+  return s;
+}
+
+vtkSmartPointer<vtkImageData> ToImageData(const avs::Grid& g)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(
+    g.Geometry.Dimensions[0], g.Geometry.Dimensions[1], g.Geometry.Dimensions[2]);
+  image->SetSpacing(g.Geometry.Spacing.x, g.Geometry.Spacing.y, g.Geometry.Spacing.z);
+  image->SetOrigin(g.Geometry.Origin.x, g.Geometry.Origin.y, g.Geometry.Origin.z);
+  vtkNew<vtkFloatArray> a;
+  a->SetNumberOfTuples(static_cast<vtkIdType>(g.Values.size()));
+  std::copy(g.Values.begin(), g.Values.end(), a->GetPointer(0));
+  image->GetPointData()->SetScalars(a);
+  return image;
+}
+
+void PlaceCamera(vtkCamera* camera)
+{
+  camera->SetPosition(0.35, 0.45, 4.3);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(30);
+  camera->SetClippingRange(1.0, 10.0);
+}
+
+// RGB in [0, 1], row 0 at the bottom, as doubles.
+std::vector<double> Pixels(vtkImageData* image)
+{
+  vtkDataArray* s = image->GetPointData()->GetScalars();
+  std::vector<double> out(3 * s->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < s->GetNumberOfTuples(); ++i)
+    for (int c = 0; c < 3; ++c)
+      out[3 * i + c] = s->GetComponent(i, c) / 255.0;
+  return out;
+}
+
+vtkSmartPointer<vtkImageData> ToPicture(const std::vector<double>& rgb,
+  int size,
+  double scale = 1.0)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(size, size, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (std::size_t i = 0; i < rgb.size(); ++i)
+  {
+    p[i] = static_cast<unsigned char>(std::lround(255.0 * std::clamp(rgb[i] * scale, 0.0, 1.0)));
+  }
+  return image;
+}
+} // namespace
+
+bool RunAccuracyStudy(const AccuracySettings& settings,
+  std::vector<AccuracyResult>& results,
+  double* pathTracerNoise)
+{
+  const int size = settings.ImageSize;
+  vtkNew<vtkImageAppend> rows;
+  rows->SetAppendAxis(1);
+  double worstNoise = 0.0;
+  for (const std::string& name : settings.Scenes)
+  {
+    StudyScene scene = MakeScene(name, settings.Voxels);
+    auto data = ToImageData(scene.Density);
+
+    vtkNew<vtkRenderWindow> window;
+    window->SetSize(size, size);
+    window->SetMultiSamples(0);
+    window->OffScreenRenderingOn();
+    vtkNew<vtkRenderer> renderer;
+    renderer->SetBackground(0, 0, 0);
+    window->AddRenderer(renderer);
+    for (const auto& l : scene.Lights)
+    {
+      renderer->AddLight(l);
+    }
+    PlaceCamera(renderer->GetActiveCamera());
+
+    // The path tracer (truth), twice with different seeds to measure its own noise.
+    avs::VolumeScene core;
+    std::string error;
+    vtkAVSSceneTranslator::ToGrid(data, core.Scalars, error);
+    vtkAVSSceneTranslator::ToTransferFunction(
+      scene.Property, 0.0, 1.0, core.Transfer, core.UnitDistance, error);
+    core.Lights = vtkAVSSceneTranslator::ToLights(renderer, renderer->GetActiveCamera());
+    avs::ScatteringParameters p;
+    p.Albedo = scene.Albedo;
+    p.Anisotropy = scene.Anisotropy;
+    const avs::ScatteringParameters rp = p.Resolve(core.Scalars.Geometry);
+    avs::PathTracerSettings pts;
+    pts.SamplesPerPixel = settings.SamplesPerPixel;
+    std::vector<double> truth[2];
+    for (int run = 0; run < 2; ++run)
+    {
+      pts.Seed = 17 + run;
+      const avs::Image image = avs::RenderPathTraced(
+        core, rp, pts, vtkAVSSceneTranslator::ToCamera(renderer->GetActiveCamera()), size, size);
+      truth[run].resize(3 * static_cast<std::size_t>(size) * size);
+      for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x)
+          for (int c = 0; c < 3; ++c)
+            truth[run][3 * (static_cast<std::size_t>(y) * size + x) + c] =
+              std::clamp(static_cast<double>(image.At(x, y)[c]), 0.0, 1.0);
+    }
+    // Noise of the mean of both runs: the RMSE between them / 2.
+    double noise = 0.0;
+    std::vector<double> reference(truth[0].size());
+    for (std::size_t i = 0; i < reference.size(); ++i)
+    {
+      reference[i] = 0.5 * (truth[0][i] + truth[1][i]);
+      noise += (truth[0][i] - truth[1][i]) * (truth[0][i] - truth[1][i]);
+    }
+    noise = std::sqrt(noise / reference.size()) / 2.0;
+    worstNoise = std::max(worstNoise, noise);
+
+    // The mappers; EA and AO get k = albedo * sum of irradiances at the centre / 4 pi.
+    double k = 0.0;
+    for (const avs::Light& l : core.Lights)
+    {
+      const avs::Vec3 e = l.FreeIrradiance({ 0, 0, 0 });
+      k += scene.Albedo * (e.x + e.y + e.z) / 3.0 / (4.0 * avs::Pi);
+    }
+    vtkNew<vtkEmissionAbsorptionVolumeMapper> ea;
+    vtkNew<vtkAmbientOcclusionVolumeMapper> ao;
+    vtkNew<vtkAmbientScatteringVolumeMapper> as;
+    ao->SetAmbientWeight(k);
+    as->SetAlbedo(scene.Albedo);
+    as->SetAnisotropy(scene.Anisotropy);
+
+    // EA's colours scaled by k (clamped at 1 by the transfer function).
+    vtkNew<vtkVolumeProperty> eaProperty;
+    eaProperty->DeepCopy(scene.Property);
+    vtkNew<vtkColorTransferFunction> scaled;
+    scaled->DeepCopy(scene.Property->GetRGBTransferFunction(0));
+    for (int i = 0; i < scaled->GetSize(); ++i)
+    {
+      double node[6];
+      scaled->GetNodeValue(i, node);
+      for (int c = 1; c <= 3; ++c)
+      {
+        node[c] = std::min(1.0, node[c] * k);
+      }
+      scaled->SetNodeValue(i, node);
+    }
+    eaProperty->SetColor(scaled);
+    const std::string models[3] = { "ea", "ao", "as" };
+    vtkAVSVolumeMapper* mappers[3] = { ea, ao, as };
+    std::vector<double> pictures[3];
+    for (int m = 0; m < 3; ++m)
+    {
+      mappers[m]->SetInputData(data);
+      mappers[m]->UseJitteringOff();
+      vtkNew<vtkVolume> volume;
+      volume->SetMapper(mappers[m]);
+      volume->SetProperty(
+        m == 0 ? static_cast<vtkVolumeProperty*>(eaProperty) : scene.Property.Get());
+      renderer->AddVolume(volume);
+      window->Render();
+      vtkNew<vtkWindowToImageFilter> grab;
+      grab->SetInput(window);
+      grab->SetInputBufferTypeToRGB();
+      grab->ReadFrontBufferOff();
+      grab->ShouldRerenderOff();
+      grab->Update();
+      renderer->RemoveVolume(volume);
+      if (mappers[m]->GetNumberOfRenderedFrames() != 1)
+      {
+        std::fprintf(stderr,
+          "avs-accuracy: the %s mapper did not render %s\n",
+          models[m].c_str(),
+          name.c_str());
+        return false;
+      }
+      pictures[m] = Pixels(grab->GetOutput());
+      double se = 0.0, l1 = 0.0, norm = 0.0;
+      for (std::size_t i = 0; i < reference.size(); ++i)
+      {
+        const double d = pictures[m][i] - reference[i];
+        se += d * d;
+        l1 += std::abs(d);
+        norm += std::abs(reference[i]);
+      }
+      AccuracyResult r;
+      r.Scene = name;
+      r.Model = models[m];
+      r.Rmse = std::sqrt(se / reference.size());
+      r.RelativeL1 = norm > 0 ? l1 / norm : 0.0;
+      results.push_back(r);
+    }
+    if (settings.Verbose)
+    {
+      std::fprintf(stderr,
+        "[avs-accuracy] %s: k = %.3f, path-tracer noise (RMSE) %.4f\n",
+        name.c_str(),
+        k,
+        noise);
+    }
+    if (!settings.OutputPicture.empty())
+    {
+      vtkNew<vtkImageAppend> row;
+      row->SetAppendAxis(0);
+      row->AddInputData(ToPicture(reference, size));
+      for (int m = 0; m < 3; ++m)
+      {
+        row->AddInputData(ToPicture(pictures[m], size));
+      }
+      for (int m = 0; m < 3; ++m)
+      {
+        std::vector<double> diff(reference.size());
+        for (std::size_t i = 0; i < diff.size(); ++i)
+        {
+          diff[i] = std::abs(pictures[m][i] - reference[i]);
+        }
+        row->AddInputData(ToPicture(diff, size, 4.0));
+      }
+      row->Update();
+      vtkNew<vtkImageData> copy;
+      copy->DeepCopy(row->GetOutput());
+      rows->AddInputData(copy);
+    }
+  }
+  if (!settings.OutputPicture.empty())
+  {
+    rows->Update();
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetInputConnection(rows->GetOutputPort());
+    writer->SetFileName(settings.OutputPicture.c_str());
+    writer->Write();
+  }
+  if (pathTracerNoise)
+  {
+    *pathTracerNoise = worstNoise;
+  }
+  return true;
+}
