@@ -51,12 +51,7 @@ int main(int argc, char* argv[])
   mapper->UseJitteringOff();
 
   vtkNew<vtkRenderWindow> window;
-  if (void* display = SharedDisplay())
-  {
-    window->SetDisplayId(display);
-  }
-  window->SetSize(192, 192);
-  window->SetMultiSamples(0);
+  PrepareTestWindow(window, 192, 192);
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0.1, 0.1, 0.15);
   window->AddRenderer(renderer);

@@ -47,12 +47,7 @@ int main(int argc, char* argv[])
   property->SetScalarOpacityUnitDistance(0.08);
 
   vtkNew<vtkRenderWindow> window;
-  if (void* display = SharedDisplay())
-  {
-    window->SetDisplayId(display);
-  }
-  window->SetSize(160, 160);
-  window->SetMultiSamples(0);
+  PrepareTestWindow(window, 160, 160);
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0.35, 0.5, 0.75);
   window->AddRenderer(renderer);
