@@ -52,6 +52,7 @@ struct vtkAVSVolumeMapper::Internals
   double AveragedRadius = -1.0;
   avs::Grid Averaged;
   int AveragedVersion = 0;
+  int AveragedOnGPU = -1;
   const avs::ScatteringTable* SliceTable = nullptr;
   double SliceG = 2.0, SliceAlbedo = -1.0;
   avs::ScatteringSlice Slice;
@@ -256,7 +257,11 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     return true;
   }
   avs::VolumeScene scene;
-  if (in.ExtinctionKey[0] != in.DataVersion || in.ExtinctionKey[1] != in.TransferVersion)
+  // Ambient scattering with compute shaders needs no extinction grid on the CPU.
+  const bool gpuScattering =
+    effect == 2 && this->PrecomputeOnGPU && in.RayCaster.SupportsComputeShaders();
+  if (!gpuScattering &&
+    (in.ExtinctionKey[0] != in.DataVersion || in.ExtinctionKey[1] != in.TransferVersion))
   {
     scene.Transfer = in.Transfer;
     scene.UnitDistance = in.UnitDistance;
@@ -331,24 +336,39 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     in.SliceAlbedo = rp.Albedo;
     ++in.SliceVersion;
   }
-  if (in.AveragedKey[0] != in.ExtinctionKey[0] || in.AveragedKey[1] != in.ExtinctionKey[1] ||
-    in.AveragedRadius != rp.AmbientRadius)
+  if (in.AveragedKey[0] != in.DataVersion || in.AveragedKey[1] != in.TransferVersion ||
+    in.AveragedRadius != rp.AmbientRadius || in.AveragedOnGPU != (gpuScattering ? 1 : 0))
   {
-    in.Averaged = avs::AverageExtinction(in.Extinction, rp.AmbientRadius);
-    if (!in.RayCaster.UploadAveragedExtinction(in.Averaged, error))
+    if (gpuScattering)
     {
-      vtkErrorMacro("Cannot render: " << error);
-      return false;
+      if (!in.RayCaster.ComputeAveragedExtinction(g.Dimensions,
+            in.UnitDistance,
+            avs::AveragingHalfWidths(rp.AmbientRadius, g.Spacing),
+            error))
+      {
+        vtkErrorMacro("Cannot render: " << error);
+        return false;
+      }
     }
-    in.AveragedKey[0] = in.ExtinctionKey[0];
-    in.AveragedKey[1] = in.ExtinctionKey[1];
+    else
+    {
+      in.Averaged = avs::AverageExtinction(in.Extinction, rp.AmbientRadius);
+      if (!in.RayCaster.UploadAveragedExtinction(in.Averaged, error))
+      {
+        vtkErrorMacro("Cannot render: " << error);
+        return false;
+      }
+    }
+    in.AveragedKey[0] = in.DataVersion;
+    in.AveragedKey[1] = in.TransferVersion;
+    in.AveragedOnGPU = gpuScattering ? 1 : 0;
     in.AveragedRadius = rp.AmbientRadius;
     ++in.AveragedVersion;
     ++this->NumberOfExtinctionRebuilds;
   }
   const avs::GridGeometry lightGrid =
     g.Resampled(avs::LightVolumeDimensions(g.Dimensions, rp.LightVolumeMaximumDimension));
-  const bool gpu = this->PrecomputeOnGPU && in.RayCaster.SupportsComputeShaders();
+  const bool gpu = gpuScattering;
   if (in.LightGridMaximum != rp.LightVolumeMaximumDimension || in.LightsOnGPU != (gpu ? 1 : 0))
   {
     in.Lights.clear();

@@ -66,9 +66,9 @@ public:
 
   ///@{
   /**
-   * Compute the light volumes and the occlusion volume on the GPU (compute shaders, OpenGL 4.3)
-   * when the context allows; otherwise, or when off, the CPU computes them (multi-threaded). The
-   * averaged extinction is computed on the CPU. Default on.
+   * Compute the averaged extinction, the light volumes and the occlusion volume on the GPU
+   * (compute shaders, OpenGL 4.3) when the context allows; otherwise, or when off, the CPU
+   * computes them (multi-threaded). Default on.
    */
   vtkSetMacro(PrecomputeOnGPU, vtkTypeBool);
   vtkGetMacro(PrecomputeOnGPU, vtkTypeBool);

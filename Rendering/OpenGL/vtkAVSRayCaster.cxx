@@ -328,7 +328,9 @@ bool vtkAVSRayCaster::SupportsComputeShaders()
   }
   this->ComputeProgram = this->BuildComputeProgram(avs_lightvolume_cs, "light-volume");
   this->OcclusionProgram = this->BuildComputeProgram(avs_occlusion_cs, "ambient-occlusion");
-  this->ComputeSupport = this->ComputeProgram && this->OcclusionProgram ? 1 : 0;
+  this->AverageProgram = this->BuildComputeProgram(avs_average_cs, "averaged-extinction");
+  this->ComputeSupport =
+    this->ComputeProgram && this->OcclusionProgram && this->AverageProgram ? 1 : 0;
   return this->ComputeSupport == 1;
 }
 
@@ -361,6 +363,80 @@ unsigned int vtkAVSRayCaster::BuildComputeProgram(const char* source, const char
     return 0;
   }
   return program;
+}
+
+bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimensions,
+  double unitDistance,
+  const std::array<int, 3>& halfWidths,
+  std::string& error)
+{
+  if (!this->SupportsComputeShaders() || !this->Scalars || !this->Transfer)
+  {
+    error = "no compute shaders, scalars or transfer function";
+    return false;
+  }
+  avs::GridGeometry g;
+  g.Dimensions = dimensions;
+  const avs::Grid shape(g, 0.0f);
+  vtkSmartPointer<vtkTextureObject> a, b;
+  if (!this->UploadScalarGrid(a, shape, 1, shape.Values.data(), error) ||
+    !this->UploadScalarGrid(b, shape, 1, shape.Values.data(), error) ||
+    !this->UploadScalarGrid(this->Averaged, shape, 1, shape.Values.data(), error))
+  {
+    return false;
+  }
+  const GLuint program = this->AverageProgram;
+  this->Window->GetShaderCache()->ReleaseCurrentShader();
+  glUseProgram(program);
+  auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
+  glUniform3i(location("u_dimensions"), dimensions[0], dimensions[1], dimensions[2]);
+  const double count =
+    (2.0 * halfWidths[0] + 1) * (2.0 * halfWidths[1] + 1) * (2.0 * halfWidths[2] + 1);
+  glUniform1f(location("u_inverseCount"), static_cast<float>(1.0 / count));
+  this->Scalars->Activate();
+  this->Transfer->Activate();
+  glUniform1i(location("u_scalars"), this->Scalars->GetTextureUnit());
+  glUniform1i(location("u_transfer"), this->Transfer->GetTextureUnit());
+  glUniform2f(location("u_scalarRange"), this->ScalarRange[0], this->ScalarRange[1]);
+  glUniform1f(location("u_transferSize"), this->TransferSize);
+  glUniform1f(location("u_unitDistance"), static_cast<float>(unitDistance));
+  // Pass 0: classify into a; then x: a -> b, y: b -> a, z: a -> Averaged.
+  vtkTextureObject* sources[4] = { a, a, b, a };
+  vtkTextureObject* targets[4] = { a, b, a, this->Averaged };
+  for (int pass = 0; pass < 4; ++pass)
+  {
+    glBindImageTexture(0, sources[pass]->GetHandle(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
+    glBindImageTexture(1, targets[pass]->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+    glUniform1i(location("u_pass"), pass);
+    if (pass == 0)
+    {
+      glDispatchCompute(static_cast<GLuint>((dimensions[0] + 7) / 8),
+        static_cast<GLuint>((dimensions[1] + 7) / 8),
+        static_cast<GLuint>(dimensions[2]));
+    }
+    else
+    {
+      const int axis = pass - 1;
+      const int u = axis == 0 ? dimensions[1] : dimensions[0];
+      const int v = axis == 2 ? dimensions[1] : dimensions[2];
+      glUniform1i(location("u_halfWidth"), halfWidths[axis]);
+      glDispatchCompute(static_cast<GLuint>((u + 7) / 8), static_cast<GLuint>((v + 7) / 8), 1);
+    }
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  }
+  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
+  glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+  glUseProgram(0);
+  this->Scalars->Deactivate();
+  this->Transfer->Deactivate();
+  a->ReleaseGraphicsResources(this->Window);
+  b->ReleaseGraphicsResources(this->Window);
+  if (const GLenum status = glGetError())
+  {
+    error = "the averaged-extinction compute pass failed (GL error " + std::to_string(status) + ")";
+    return false;
+  }
+  return true;
 }
 
 bool vtkAVSRayCaster::ComputeOcclusion(const avs::Grid& extinction,

@@ -62,6 +62,14 @@ public:
     int directions,
     std::string& error);
 
+  /// The averaged extinction computed on the GPU from the uploaded scalars and transfer function
+  /// (classification, then box sums along x, y, z with the half widths) into the averaged
+  /// texture. `dimensions` are the data's.
+  bool ComputeAveragedExtinction(const std::array<int, 3>& dimensions,
+    double unitDistance,
+    const std::array<int, 3>& halfWidths,
+    std::string& error);
+
   /// Whether the context runs compute shaders (OpenGL 4.3), for the GPU precomputation.
   bool SupportsComputeShaders();
   /// Light volumes computed on the GPU: allocates the two packed textures on `lightGrid` (once
@@ -112,6 +120,7 @@ private:
   int DepthFormat = 0;
   unsigned int ComputeProgram = 0;   ///< GL name of the light-volume compute program
   unsigned int OcclusionProgram = 0; ///< GL name of the ambient-occlusion compute program
+  unsigned int AverageProgram = 0;   ///< GL name of the averaged-extinction compute program
   int ComputeSupport = -1;           ///< -1 unknown, 0 no, 1 yes
   std::array<int, 3> ComputedDimensions{ 0, 0, 0 };
   float TauNodes = 2.0f;
