@@ -169,7 +169,6 @@ struct PathContext
   const ScatteringParameters& P;
   const PathTracerSettings& S;
   const VolumeTracker& Tracker;
-  double BoxDiagonal;
 };
 
 // One camera path; returns radiance and whether the primary ray collided.
@@ -259,7 +258,7 @@ Image RenderPathTraced(const VolumeScene& scene,
   const MajorantGrid majorants(
     scene.Scalars, scene.Transfer, scene.UnitDistance, settings.MajorantCellSize);
   const VolumeTracker tracker(scene, majorants);
-  const PathContext context{ scene, p, settings, tracker, scene.Scalars.Geometry.Diagonal() };
+  const PathContext context{ scene, p, settings, tracker };
   std::vector<double> sum(4 * static_cast<std::size_t>(image.Width) * image.Height, 0.0);
   std::mutex statsMutex;
   PathTracerStatistics total;
