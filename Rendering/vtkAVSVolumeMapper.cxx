@@ -353,7 +353,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     else
     {
       in.Averaged = avs::AverageExtinction(in.Extinction, rp.AmbientRadius);
-      if (!in.RayCaster.UploadAveragedExtinction(in.Averaged, error))
+      if (!in.RayCaster.UploadAveragedExtinction(in.Scalars, in.Averaged, error))
       {
         vtkErrorMacro("Cannot render: " << error);
         return false;

@@ -45,6 +45,11 @@ void PrintHelp(const avs::PreintegrationSettings& d)
     "  --threshold X      an entry is significant when it is at least X times the largest value\n"
     "                     of A (or of F) in the table [%g]\n"
     "  --threads N        worker threads (0: all cores, or AVS_NUM_THREADS) [0]\n"
+    "  --refine TABLE     start from an earlier table with the same axes: copy its cells whose\n"
+    "                     significant entries all meet --target-error, compute the others again\n"
+    "                     with these options (e.g. a larger --max-paths-f); OUTPUT may be TABLE\n"
+    "  --checkpoint S     write OUTPUT every S seconds while running (0: only at the end); a\n"
+    "                     run cut short resumes with --refine OUTPUT [%g]\n"
     "  --quiet            no progress display\n"
     "  --help             this text\n"
     "\n"
@@ -61,7 +66,8 @@ void PrintHelp(const avs::PreintegrationSettings& d)
     static_cast<unsigned long long>(d.MaximumPaths),
     static_cast<unsigned long long>(d.MaximumPathsF),
     d.TargetRelativeError,
-    d.SignificanceThreshold);
+    d.SignificanceThreshold,
+    d.CheckpointSeconds);
 }
 
 bool ParseNumber(const char* text, double& out)
@@ -77,6 +83,7 @@ int main(int argc, char* argv[])
 {
   avs::PreintegrationSettings settings;
   std::string output;
+  std::string refineFile;
   bool quiet = false;
   for (int i = 1; i < argc; ++i)
   {
@@ -89,6 +96,16 @@ int main(int argc, char* argv[])
     if (arg == "--quiet")
     {
       quiet = true;
+      continue;
+    }
+    if (arg == "--refine")
+    {
+      if (i + 1 >= argc)
+      {
+        std::fprintf(stderr, "avs-preintegrate: option --refine needs a table file\n");
+        return 2;
+      }
+      refineFile = argv[++i];
       continue;
     }
     if (arg.rfind("--", 0) == 0)
@@ -128,6 +145,8 @@ int main(int argc, char* argv[])
         settings.TargetRelativeError = v;
       else if (arg == "--threshold")
         settings.SignificanceThreshold = v;
+      else if (arg == "--checkpoint")
+        settings.CheckpointSeconds = v;
       else if (arg == "--threads")
         settings.Threads = static_cast<int>(v);
       else
@@ -163,6 +182,25 @@ int main(int argc, char* argv[])
     return 2;
   }
 
+  avs::ScatteringTable earlier;
+  if (!refineFile.empty())
+  {
+    std::string error;
+    if (!earlier.Read(refineFile, &error))
+    {
+      std::fprintf(stderr, "avs-preintegrate: cannot refine: %s\n", error.c_str());
+      return 1;
+    }
+    if (!(earlier.Axes == settings.Axes))
+    {
+      std::fprintf(stderr,
+        "avs-preintegrate: cannot refine %s: its axes differ from the requested ones\n",
+        refineFile.c_str());
+      return 2;
+    }
+    settings.Refine = &earlier;
+  }
+
   const auto start = std::chrono::steady_clock::now();
   if (!quiet)
   {
@@ -185,6 +223,21 @@ int main(int argc, char* argv[])
       std::fflush(stderr);
     };
   }
+  if (settings.CheckpointSeconds > 0.0)
+  {
+    settings.Checkpoint = [output, quiet](const avs::ScatteringTable& partial)
+    {
+      std::string error;
+      if (!partial.Write(output, &error))
+      {
+        std::fprintf(stderr, "\navs-preintegrate: checkpoint failed: %s\n", error.c_str());
+      }
+      else if (!quiet)
+      {
+        std::fprintf(stderr, "\n[avs-preintegrate] checkpoint written to %s\n", output.c_str());
+      }
+    };
+  }
   avs::PreintegrationStatistics stats;
   const avs::ScatteringTable table = avs::Preintegrate(settings, &stats);
   std::string error;
@@ -200,6 +253,12 @@ int main(int argc, char* argv[])
     settings.Axes.TauMaximum,
     settings.Axes.NumberOfAnisotropy,
     settings.Axes.NumberOfAlbedo);
+  if (settings.Refine)
+  {
+    std::printf("refined %s: %zu cells computed again, the others copied\n",
+      refineFile.c_str(),
+      stats.CellsComputed);
+  }
   std::printf("paths: %llu for A, %llu for F, %llu vertices; %zu cells stopped at --max-paths\n",
     static_cast<unsigned long long>(stats.PathsA),
     static_cast<unsigned long long>(stats.PathsF),
@@ -211,8 +270,9 @@ int main(int argc, char* argv[])
     settings.SignificanceThreshold,
     table.MaximumRelativeErrorA(settings.SignificanceThreshold),
     table.MaximumRelativeErrorF(settings.SignificanceThreshold));
-  std::printf("time: %.1f s on %d threads\n",
+  std::printf("time: %.1f s on %d threads%s\n",
     table.GenerationSeconds,
-    settings.Threads > 0 ? settings.Threads : avs::DefaultThreadCount());
+    settings.Threads > 0 ? settings.Threads : avs::DefaultThreadCount(),
+    settings.Refine ? " (including the earlier table's)" : "");
   return 0;
 }

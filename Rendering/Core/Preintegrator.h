@@ -46,6 +46,16 @@ struct PreintegrationSettings
   int Threads = 0;                       ///< 0: DefaultThreadCount()
   /// Optional subset of cells (tau index, g index) to compute; empty: all. Other cells stay 0.
   std::vector<std::pair<int, int>> Cells;
+  /// Optional earlier table with the same axes to refine: its cells whose significant entries
+  /// all meet TargetRelativeError are copied, the others are computed again from scratch with
+  /// these settings (typically a larger path budget). With the same seed, a refined cell is the
+  /// cell a single run with these settings would give. Ignored when the axes differ.
+  const ScatteringTable* Refine = nullptr;
+  /// Optional: called with the table so far (finished cells computed, the others as in Refine,
+  /// or empty) at most every CheckpointSeconds, serialised, never with half a cell. Writing it
+  /// out makes a long run resumable: refining the checkpoint skips the cells already done.
+  std::function<void(const ScatteringTable&)> Checkpoint;
+  double CheckpointSeconds = 600.0;
   /// Called with (cells done, cells in all) from the worker threads, serialised.
   std::function<void(std::size_t, std::size_t)> Progress;
 };
@@ -56,7 +66,13 @@ struct PreintegrationStatistics
   std::uint64_t PathsF = 0;
   std::uint64_t Vertices = 0;
   std::size_t CellsAtPathLimit = 0; ///< cells that stopped on MaximumPaths, not on the error
+  std::size_t CellsComputed = 0;    ///< cells traced in this run (the others were copied)
 };
+
+/// Whether every significant entry of cell (tau index j, g index k) has a relative standard
+/// error at most `target`. Significance as in the settings (relative to the table's largest A,
+/// or to F = 1).
+bool CellMeetsTarget(const ScatteringTable& table, int j, int k, double threshold, double target);
 
 /// Runs the generator. Cells with tau = 0 are analytic: A = albedo p_g(cos theta), F = 1.
 ScatteringTable Preintegrate(const PreintegrationSettings& settings,

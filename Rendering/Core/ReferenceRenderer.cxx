@@ -134,6 +134,8 @@ void CastRay(const VolumeScene& scene,
   t0 = std::max(t0, 0.0); // camera inside the volume
   const int n = std::max(1, static_cast<int>(std::ceil((t1 - t0) / p.SampleDistance - 1e-9)));
   const double dt = (t1 - t0) / n;
+  // Ambient scattering's look-ahead r, rounded to whole steps (as the GPU's ring buffer needs).
+  const int lag = std::max(1, static_cast<int>(std::floor(p.AmbientRadius / dt + 0.5)));
   const double nan = std::numeric_limits<double>::quiet_NaN();
   // sigma_t and colour at a local point: classification after interpolation, as on the GPU.
   auto classify = [&](const Vec3& x, double& sigmaT, Vec3& color)
@@ -184,11 +186,15 @@ void CastRay(const VolumeScene& scene,
     {
       // Emission (eq. 8.7).
       L = L + c * (T * (1.0 - p.Albedo) * sigmaT * p.EmissionWeight * dt);
-      // Ambient in-scattering from the ball around x' = x(t + r) (eqs. 8.8-8.9).
-      const Vec3 xr = o + d * (t + p.AmbientRadius);
-      double sigmaR;
+      // Ambient in-scattering from the ball around x' = x(t + r) (eqs. 8.8-8.9), with r rounded
+      // to `lag` steps; x' beyond the ray's end (outside the box) adds nothing.
+      const Vec3 xr = o + d * (t + lag * dt);
+      double sigmaR = 0.0;
       Vec3 cr;
-      classify(xr, sigmaR, cr);
+      if (i + lag < n)
+      {
+        classify(xr, sigmaR, cr);
+      }
       if (sigmaR > 0.0)
       {
         const double tau = p.AmbientRadius * SampleLocal(v.Averaged, xr, 0.0);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -495,11 +496,14 @@ std::vector<unsigned char> ScatteringTable::Serialize() const
 
 bool ScatteringTable::Write(const std::string& fileName, std::string* error) const
 {
+  // Written beside the target and renamed over it, so that an interrupted write never leaves
+  // a truncated table behind.
   const auto bytes = this->Serialize();
-  std::ofstream out(fileName, std::ios::binary | std::ios::trunc);
+  const std::string temporary = fileName + ".part";
+  std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
   if (!out)
   {
-    SetError(error, "cannot open '" + fileName + "' for writing");
+    SetError(error, "cannot open '" + temporary + "' for writing");
     return false;
   }
   out.write(
@@ -507,7 +511,14 @@ bool ScatteringTable::Write(const std::string& fileName, std::string* error) con
   out.close();
   if (!out)
   {
+    std::remove(temporary.c_str());
     SetError(error, "error while writing '" + fileName + "'");
+    return false;
+  }
+  if (std::rename(temporary.c_str(), fileName.c_str()) != 0)
+  {
+    std::remove(temporary.c_str());
+    SetError(error, "cannot replace '" + fileName + "'");
     return false;
   }
   return true;

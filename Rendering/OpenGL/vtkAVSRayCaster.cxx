@@ -24,13 +24,19 @@
 
 namespace
 {
-// Splits an effect file into its declarations and its per-sample code.
-void SplitEffect(const std::string& text, std::string& dec, std::string& sample)
+// Splits an effect file into its declarations, its per-ray set-up (optional) and its
+// per-sample code, in that order.
+void SplitEffect(const std::string& text, std::string& dec, std::string& init, std::string& sample)
 {
-  const std::string marker = "//AVS::Effect::Sample";
-  const std::size_t at = text.find(marker);
-  dec = text.substr(0, at);
-  sample = at == std::string::npos ? std::string() : text.substr(at + marker.size());
+  const std::string initMarker = "//AVS::Effect::Init";
+  const std::string sampleMarker = "//AVS::Effect::Sample";
+  const std::size_t sampleAt = std::min(text.find(sampleMarker), text.size());
+  const std::size_t initAt = std::min(text.find(initMarker), sampleAt);
+  dec = text.substr(0, initAt);
+  init = initAt < sampleAt
+    ? text.substr(initAt + initMarker.size(), sampleAt - initAt - initMarker.size())
+    : std::string();
+  sample = sampleAt < text.size() ? text.substr(sampleAt + sampleMarker.size()) : std::string();
 }
 
 void Replace(std::string& s, const std::string& what, const std::string& with)
@@ -40,6 +46,46 @@ void Replace(std::string& s, const std::string& what, const std::string& with)
   {
     s.replace(at, what.size(), with);
   }
+}
+
+// Compile-time choices of the ray-casting program for a frame (see avs_as_effect.glsl): the
+// ring buffer's size for the ambient-scattering look-ahead and the number of light textures.
+std::string ProgramDefines(const vtkAVSRayCaster::Frame& frame)
+{
+  if (frame.Mode == avs::RenderMode::EmissionAbsorption)
+  {
+    return std::string();
+  }
+  const avs::ScatteringParameters& p = frame.Parameters;
+  std::string defines =
+    "#define AVS_NUMBER_OF_LIGHTS " + std::to_string(frame.Lights.size()) + "\n";
+  if (std::any_of(
+        frame.Lights.begin(), frame.Lights.end(), [](const avs::Light& l) { return l.IsSpot(); }))
+  {
+    defines += "#define AVS_SPOT_LIGHTS\n";
+  }
+  if (frame.Mode == avs::RenderMode::AmbientOcclusion)
+  {
+    if (p.DirectLightWeight > 0.0 && !frame.Lights.empty())
+    {
+      defines += "#define AVS_DIRECT_LIGHT\n";
+    }
+    return defines;
+  }
+  // A ray of two or more steps has dt >= sample distance / 2, so the look-ahead k = round(r /
+  // dt) is at most 2 r / sample distance + 1/2; a ray of one step adds no in-scattered light.
+  const double most = 2.0 * p.AmbientRadius / p.SampleDistance + 2.0;
+  int ring = 16;
+  while (ring < most && ring <= vtkAVSRayCaster::MaximumRingSize)
+  {
+    ring *= 2;
+  }
+  defines += ring > vtkAVSRayCaster::MaximumRingSize
+    ? "#define AVS_LOOKAHEAD_EXPLICIT\n"
+    : "#define AVS_RING " + std::to_string(ring) + "\n";
+  defines +=
+    frame.Lights.size() > 4 ? "#define AVS_LIGHT_TEXTURES 2\n" : "#define AVS_LIGHT_TEXTURES 1\n";
+  return defines;
 }
 
 void ConfigureSampling(vtkTextureObject* t)
@@ -162,9 +208,22 @@ bool vtkAVSRayCaster::UploadScalars(const avs::Grid& scalars, std::string& error
   return this->UploadScalarGrid(this->Scalars, scalars, 1, scalars.Values.data(), error);
 }
 
-bool vtkAVSRayCaster::UploadAveragedExtinction(const avs::Grid& averaged, std::string& error)
+bool vtkAVSRayCaster::UploadAveragedExtinction(const avs::Grid& scalars,
+  const avs::Grid& averaged,
+  std::string& error)
 {
-  return this->UploadScalarGrid(this->Averaged, averaged, 1, averaged.Values.data(), error);
+  if (scalars.Values.size() != averaged.Values.size())
+  {
+    error = "the averaged extinction is not on the data's grid";
+    return false;
+  }
+  std::vector<float> pairs(2 * averaged.Values.size());
+  for (std::size_t i = 0; i < averaged.Values.size(); ++i)
+  {
+    pairs[2 * i] = scalars.Values[i];
+    pairs[2 * i + 1] = averaged.Values[i];
+  }
+  return this->UploadScalarGrid(this->Averaged, averaged, 2, pairs.data(), error);
 }
 
 bool vtkAVSRayCaster::UploadOcclusion(const avs::Grid& occlusion, std::string& error)
@@ -278,9 +337,9 @@ bool vtkAVSRayCaster::UploadTableSlice(const avs::ScatteringSlice& slice, std::s
   return true;
 }
 
-bool vtkAVSRayCaster::EnsureProgram(avs::RenderMode mode)
+bool vtkAVSRayCaster::EnsureProgram(avs::RenderMode mode, const std::string& defines)
 {
-  if (this->Quad && this->QuadMode == static_cast<int>(mode))
+  if (this->Quad && this->QuadMode == static_cast<int>(mode) && this->QuadDefines == defines)
   {
     return true;
   }
@@ -293,10 +352,12 @@ bool vtkAVSRayCaster::EnsureProgram(avs::RenderMode mode)
   std::string effect = mode == avs::RenderMode::EmissionAbsorption
     ? avs_ea_effect
     : (mode == avs::RenderMode::AmbientOcclusion ? avs_ao_effect : avs_as_effect);
-  std::string dec, sample;
-  SplitEffect(effect, dec, sample);
-  Replace(fs, "//AVS::Lights::Dec", avs_lights);
+  std::string dec, init, sample;
+  SplitEffect(effect, dec, init, sample);
+  // The compile-time choices go before the first snippet that may test them.
+  Replace(fs, "//AVS::Lights::Dec", defines + avs_lights);
   Replace(fs, "//AVS::Effect::Dec", dec);
+  Replace(fs, "//AVS::Effect::Init", init);
   Replace(fs, "//AVS::Effect::Sample", sample);
   this->Quad = std::make_unique<vtkOpenGLQuadHelper>(this->Window, nullptr, fs.c_str(), "");
   if (!this->Quad->Program || !this->Quad->Program->GetCompiled())
@@ -305,6 +366,7 @@ bool vtkAVSRayCaster::EnsureProgram(avs::RenderMode mode)
     return false;
   }
   this->QuadMode = static_cast<int>(mode);
+  this->QuadDefines = defines;
   return true;
 }
 
@@ -381,7 +443,7 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
   vtkSmartPointer<vtkTextureObject> a, b;
   if (!this->UploadScalarGrid(a, shape, 1, shape.Values.data(), error) ||
     !this->UploadScalarGrid(b, shape, 1, shape.Values.data(), error) ||
-    !this->UploadScalarGrid(this->Averaged, shape, 1, shape.Values.data(), error))
+    !this->UploadScalarGrid(this->Averaged, shape, 2, nullptr, error))
   {
     return false;
   }
@@ -400,9 +462,10 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
   glUniform2f(location("u_scalarRange"), this->ScalarRange[0], this->ScalarRange[1]);
   glUniform1f(location("u_transferSize"), this->TransferSize);
   glUniform1f(location("u_unitDistance"), static_cast<float>(unitDistance));
-  // Pass 0: classify into a; then x: a -> b, y: b -> a, z: a -> Averaged.
+  // Pass 0: classify into a; then x: a -> b, y: b -> a, z: a -> Averaged (with the scalars).
   vtkTextureObject* sources[4] = { a, a, b, a };
-  vtkTextureObject* targets[4] = { a, b, a, this->Averaged };
+  vtkTextureObject* targets[4] = { a, b, a, b };
+  glBindImageTexture(2, this->Averaged->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
   for (int pass = 0; pass < 4; ++pass)
   {
     glBindImageTexture(0, sources[pass]->GetHandle(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
@@ -426,6 +489,7 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
   }
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
   glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+  glBindImageTexture(2, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
   glUseProgram(0);
   this->Scalars->Deactivate();
   this->Transfer->Deactivate();
@@ -679,7 +743,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     error = "nothing uploaded";
     return false;
   }
-  if (!this->EnsureProgram(frame.Mode))
+  if (!this->EnsureProgram(frame.Mode, ProgramDefines(frame)))
   {
     error = "the ray-casting shader did not compile or link (see the log above)";
     return false;
@@ -750,12 +814,14 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
       position[j][k] = static_cast<float>(l.Position[k]);
       axis[j][k] = static_cast<float>(a[k]);
       irradiance[j][k] = static_cast<float>(l.Irradiance[k]);
-      attenuation[j][k] = static_cast<float>(l.Attenuation[k]);
+      // Directional lights do not fall off: (1, 0, 0) keeps the shader free of type branches.
+      attenuation[j][k] = l.Type == avs::LightType::Positional
+        ? static_cast<float>(l.Attenuation[k])
+        : (k == 0 ? 1.0f : 0.0f);
     }
     coneCos[j] = l.IsSpot() ? static_cast<float>(std::cos(l.ConeAngle * avs::Pi / 180.0)) : -2.0f;
-    exponent[j] = static_cast<float>(l.Exponent);
+    exponent[j] = l.IsSpot() ? static_cast<float>(l.Exponent) : 0.0f;
   }
-  program->SetUniformi("u_numberOfLights", n);
   program->SetUniform1iv("u_lightPositional", MaximumNumberOfLights, positional);
   program->SetUniform3fv("u_lightPosition", MaximumNumberOfLights, position);
   program->SetUniform3fv("u_lightAxis", MaximumNumberOfLights, axis);

@@ -34,6 +34,9 @@ class vtkAVSRayCaster
 {
 public:
   static constexpr int MaximumNumberOfLights = 8;
+  /// Largest ring buffer of the ambient-scattering look-ahead (entries); beyond it the
+  /// look-ahead sample is classified explicitly.
+  static constexpr int MaximumRingSize = 512;
 
   vtkAVSRayCaster();
   ~vtkAVSRayCaster();
@@ -51,7 +54,11 @@ public:
   /// Texture uploads; return false and say why in `error` when the GPU refuses.
   bool UploadScalars(const avs::Grid& scalars, std::string& error);
   bool UploadTransferFunction(const avs::TransferFunction& tf, std::string& error);
-  bool UploadAveragedExtinction(const avs::Grid& averaged, std::string& error);
+  /// The CPU's averaged extinction, stored beside the scalars (two channels: scalar, averaged)
+  /// as the ambient-scattering ray caster fetches them; both on the data's grid.
+  bool UploadAveragedExtinction(const avs::Grid& scalars,
+    const avs::Grid& averaged,
+    std::string& error);
   /// Up to 8 light volumes on one grid, packed four to an RGBA texture.
   bool UploadLightVolumes(const std::vector<avs::Grid>& volumes, std::string& error);
 
@@ -106,7 +113,7 @@ private:
     int components,
     const float* data,
     std::string& error);
-  bool EnsureProgram(avs::RenderMode mode);
+  bool EnsureProgram(avs::RenderMode mode, const std::string& defines);
   /// Copies the depth of the viewport into Depth (multisampled framebuffers are resolved).
   void CaptureDepth(int x, int y, int width, int height);
   unsigned int BuildComputeProgram(const char* source, const char* what);
@@ -117,6 +124,7 @@ private:
   vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFramebuffer;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   int QuadMode = -1;
+  std::string QuadDefines;
   int DepthFormat = 0;
   unsigned int ComputeProgram = 0;   ///< GL name of the light-volume compute program
   unsigned int OcclusionProgram = 0; ///< GL name of the ambient-occlusion compute program

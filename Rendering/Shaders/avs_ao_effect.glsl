@@ -1,6 +1,7 @@
 //AVS::Effect::Dec
 // Volumetric ambient occlusion (ALGORITHM.md section 7): EA with the colour scaled by
-// k_amb AO(x) + k_e, plus optional unshadowed direct light.
+// k_amb AO(x) + k_e, plus optional unshadowed direct light (compiled in, as AVS_DIRECT_LIGHT,
+// only when its weight is above 0).
 uniform sampler3D u_occlusion;
 uniform float u_ambientWeight;
 uniform float u_emissionWeight;
@@ -12,16 +13,20 @@ uniform float u_anisotropy;
       float ao = texture(u_occlusion, (index + 0.5) / u_dimensions).r;
       float weight = u_ambientWeight * ao + u_emissionWeight;
       vec3 c = here.rgb * weight;
-      if (u_directLightWeight > 0.0 && here.a > 0.0)
+#ifdef AVS_DIRECT_LIGHT
+      if (here.a > 0.0)
       {
         vec3 world = origin + t * direction;
         vec3 direct = vec3(0.0);
-        for (int j = 0; j < u_numberOfLights; ++j)
+        for (int j = 0; j < AVS_NUMBER_OF_LIGHTS; ++j)
         {
-          float mu = dot(LightPropagation(j, world), -direction);
-          direct += LightIrradiance(j, world) * (4.0 * PI * u_albedo * HenyeyGreenstein(mu, u_anisotropy));
+          vec3 propagation, irradiance;
+          LightAt(j, world, propagation, irradiance);
+          float mu = dot(propagation, -direction);
+          direct += irradiance * (4.0 * PI * u_albedo * HenyeyGreenstein(mu, u_anisotropy));
         }
         c += here.rgb * direct * u_directLightWeight;
       }
+#endif
       L += T * (1.0 - extinction) * c;
     }

@@ -1,7 +1,21 @@
 //AVS::Effect::Dec
 // Ambient scattering (ALGORITHM.md section 6): emission (eq. 8.7) and the light that the ball of
 // radius r around x' = x(t + r) scatters towards the camera (eqs. 8.8-8.9).
-uniform sampler3D u_averaged;      // averaged sigma_t on the data's grid
+//
+// The look-ahead r is rounded to a whole number k of steps, so that x' is the sample k steps
+// further on. Instead of classifying x' a second time, the ray adds the in-scattered light of
+// each sample with the transmittance it had k samples earlier, kept in a ring buffer of
+// AVS_RING entries: the same sum as in ALGORITHM.md with one classification per sample. The
+// ray caster sizes the ring from r and the sample distance when it builds the program; for a
+// radius too large for any ring it defines AVS_LOOKAHEAD_EXPLICIT instead, and x' is classified
+// explicitly (the same sum, slower). AVS_LIGHT_TEXTURES (1 or 2) says how many light-volume
+// textures the lights need. Both choices are compile-time because a software rasterizer runs
+// every branch of a shader whatever its condition.
+#define AVS_EFFECT_VOLUME u_averaged
+#ifndef AVS_LOOKAHEAD_EXPLICIT
+#define AVS_EFFECT_TERMINATION
+#endif
+uniform sampler3D u_averaged;      // data grid: .r the scalar, .g the averaged sigma_t
 uniform sampler3D u_lightVolumes0; // tube transmittance of lights 0-3 (rgba)
 uniform sampler3D u_lightVolumes1; // lights 4-7
 uniform vec3 u_lightVolumeDimensions;
@@ -11,6 +25,11 @@ uniform float u_tableTauMaximum;
 uniform float u_albedo;
 uniform float u_ambientRadius;
 uniform float u_emissionWeight;
+
+int g_lag; // k: the look-ahead in samples
+#ifndef AVS_LOOKAHEAD_EXPLICIT
+float g_ring[AVS_RING]; // T at the last AVS_RING samples; AVS_RING is a power of two > k
+#endif
 
 // A(theta; tau) from the table slice; v is tau's table coordinate (see TableTauCoordinate).
 float InScattering(float cosTheta, float v)
@@ -24,27 +43,63 @@ float TableTauCoordinate(float tau)
 {
   return log(1.0 + clamp(tau, 0.0, u_tableTauMaximum)) / log(1.0 + u_tableTauMaximum);
 }
+
+// sigma_t(x') c(x') sum_j E_j(x') A(theta_j; r sigma~_t(x')) at the continuous voxel index x'
+// (world position `world`) for a ray along `direction`; `averaged` is sigma~_t(x').
+vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified, float averaged)
+{
+  float v = TableTauCoordinate(u_ambientRadius * averaged);
+  // The tube transmittances of all lights at x', four to a texture fetch.
+  vec3 f = index / (u_dimensions - 1.0);
+  vec3 lc = (f * (u_lightVolumeDimensions - 1.0) + 0.5) / u_lightVolumeDimensions;
+  vec4 tubes0 = texture(u_lightVolumes0, lc);
+#if AVS_LIGHT_TEXTURES > 1
+  vec4 tubes1 = texture(u_lightVolumes1, lc);
+#else
+  vec4 tubes1 = vec4(1.0);
+#endif
+  vec3 inscatter = vec3(0.0);
+  for (int j = 0; j < AVS_NUMBER_OF_LIGHTS; ++j)
+  {
+    vec3 propagation, irradiance;
+    LightAt(j, world, propagation, irradiance);
+    float tube = j < 4 ? tubes0[j] : tubes1[j - 4];
+    inscatter += irradiance * (tube * InScattering(dot(propagation, -direction), v));
+  }
+  return classified.a * classified.rgb * inscatter;
+}
+
+#ifndef AVS_LOOKAHEAD_EXPLICIT
+bool EffectContinues(float T, int i)
+{
+  // Sample i still receives light while the transmittance k samples back is above the threshold.
+  return i < g_lag || g_ring[(i - g_lag) & (AVS_RING - 1)] >= u_termination;
+}
+#endif
+//AVS::Effect::Init
+  g_lag = max(1, int(floor(u_ambientRadius / dt + 0.5)));
 //AVS::Effect::Sample
-    L += T * (1.0 - u_albedo) * here.a * u_emissionWeight * dt * here.rgb;
+    if (T >= u_termination)
     {
-      vec3 ahead = index + u_ambientRadius * id;
-      vec4 s2 = ClassifyAt(ahead);
+      L += T * (1.0 - u_albedo) * here.a * u_emissionWeight * dt * here.rgb;
+    }
+#ifndef AVS_LOOKAHEAD_EXPLICIT
+    g_ring[i & (AVS_RING - 1)] = T;
+    float lagged = i >= g_lag ? g_ring[(i - g_lag) & (AVS_RING - 1)] : 0.0;
+    if (here.a > 0.0 && lagged >= u_termination)
+    {
+      L += lagged * dt * InScattered(index, origin + t * direction, direction, here, voxel.g);
+    }
+#else
+    if (i + g_lag < steps)
+    {
+      float ta = t + float(g_lag) * dt;
+      vec3 ahead = io + ta * id;
+      vec4 aheadVoxel = texture(u_averaged, (ahead + 0.5) / u_dimensions);
+      vec4 s2 = Classify(aheadVoxel.r);
       if (s2.a > 0.0)
       {
-        float v = TableTauCoordinate(u_ambientRadius * texture(u_averaged, (ahead + 0.5) / u_dimensions).r);
-        vec3 world = origin + (t + u_ambientRadius) * direction;
-        // The tube transmittances of all lights at x', four to a texture fetch.
-        vec3 f = ahead / (u_dimensions - 1.0);
-        vec3 lc = (f * (u_lightVolumeDimensions - 1.0) + 0.5) / u_lightVolumeDimensions;
-        vec4 tubes0 = texture(u_lightVolumes0, lc);
-        vec4 tubes1 = u_numberOfLights > 4 ? texture(u_lightVolumes1, lc) : vec4(1.0);
-        vec3 inscatter = vec3(0.0);
-        for (int j = 0; j < u_numberOfLights; ++j)
-        {
-          float cosTheta = dot(LightPropagation(j, world), -direction);
-          float tube = j < 4 ? tubes0[j] : tubes1[j - 4];
-          inscatter += LightIrradiance(j, world) * (tube * InScattering(cosTheta, v));
-        }
-        L += T * s2.a * dt * s2.rgb * inscatter;
+        L += T * dt * InScattered(ahead, origin + ta * direction, direction, s2, aheadVoxel.g);
       }
     }
+#endif

@@ -3,11 +3,14 @@
 // Rendering/Core/AveragedExtinction.cxx, which the tests hold this pass against).
 // Pass 0 classifies the scalars into sigma_t; passes 1-3 are the box sums along x, y and z, one
 // invocation per line with a running window sum in double precision (the per-line summed-area
-// table); pass 3 also divides by the full box count, so voxels outside count as 0.
+// table); pass 3 also divides by the full box count, so voxels outside count as 0, and writes
+// the result beside the voxel's scalar into the ray caster's two-channel texture (.r scalar,
+// .g averaged sigma_t), so that one fetch per sample gives both.
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(r32f, binding = 0) uniform readonly image3D u_input;
 layout(r32f, binding = 1) uniform writeonly image3D u_output;
+layout(rg32f, binding = 2) uniform writeonly image3D u_final; // pass 3
 uniform int u_pass;
 uniform ivec3 u_dimensions;
 uniform int u_halfWidth;     // k along this pass's axis
@@ -50,10 +53,18 @@ void main()
   {
     sum += double(imageLoad(u_input, base + j * step).r);
   }
-  float scale = u_pass == 3 ? u_inverseCount : 1.0;
+  float scale = u_inverseCount;
   for (int i = 0; i < n; ++i)
   {
-    imageStore(u_output, base + i * step, vec4(float(sum) * scale));
+    if (u_pass == 3)
+    {
+      ivec3 v = base + i * step;
+      imageStore(u_final, v, vec4(texelFetch(u_scalars, v, 0).r, float(sum) * scale, 0.0, 0.0));
+    }
+    else
+    {
+      imageStore(u_output, base + i * step, vec4(float(sum)));
+    }
     int add = i + k + 1;
     int remove = i - k;
     if (add < n)

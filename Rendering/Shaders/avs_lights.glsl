@@ -1,7 +1,10 @@
 //AVS::Lights::Dec
 // The renderer's lights in world space (Rendering/Core/Lights.h): type 0 directional, 1
-// positional; positional lights with a cone below 90 degrees are spots.
-uniform int u_numberOfLights;
+// positional; positional lights with a cone below 90 degrees are spots. The ray caster defines
+// AVS_NUMBER_OF_LIGHTS (so that loops over the lights unroll with constant indices) and
+// AVS_SPOT_LIGHTS when a spot is among them, and uploads directional lights with attenuation
+// (1, 0, 0) and lights other than spots with exponent 0: LightAt then needs no branch on the
+// light's type, which matters where every branch of a shader runs (software rasterizers).
 uniform int u_lightPositional[8];
 uniform vec3 u_lightPosition[8];
 uniform vec3 u_lightAxis[8];       // normalize(focal point - position)
@@ -10,32 +13,19 @@ uniform vec3 u_lightAttenuation[8];
 uniform float u_lightConeCos[8];   // cos(cone angle); -2 for no cone
 uniform float u_lightExponent[8];
 
-vec3 LightPropagation(int j, vec3 x)
+// Light j at x: its propagation direction and its irradiance without shadowing (VTK's
+// attenuation 1 / (a0 + a1 d + a2 d^2) and spot cone for positional lights).
+void LightAt(int j, vec3 x, out vec3 propagation, out vec3 irradiance)
 {
-  if (u_lightPositional[j] == 0)
-  {
-    return u_lightAxis[j];
-  }
-  vec3 d = x - u_lightPosition[j];
-  float l = length(d);
-  return l > 0.0 ? d / l : u_lightAxis[j];
-}
-
-vec3 LightIrradiance(int j, vec3 x)
-{
-  if (u_lightPositional[j] == 0)
-  {
-    return u_lightIrradiance[j];
-  }
-  vec3 d = x - u_lightPosition[j];
+  vec3 d = u_lightPositional[j] == 1 ? x - u_lightPosition[j] : u_lightAxis[j];
   float dist = length(d);
+  propagation = dist > 0.0 ? d / dist : u_lightAxis[j];
   vec3 a = u_lightAttenuation[j];
   float att = a.x + a.y * dist + a.z * dist * dist;
   float scale = att > 0.0 ? 1.0 / att : 0.0;
-  if (u_lightConeCos[j] > -1.5)
-  {
-    float c = dist > 0.0 ? dot(u_lightAxis[j], d / dist) : 1.0;
-    scale = c >= u_lightConeCos[j] ? scale * pow(max(c, 0.0), u_lightExponent[j]) : 0.0;
-  }
-  return u_lightIrradiance[j] * scale;
+#ifdef AVS_SPOT_LIGHTS
+  float c = dot(u_lightAxis[j], propagation);
+  scale = c >= u_lightConeCos[j] ? scale * exp2(u_lightExponent[j] * log2(max(c, 1e-30))) : 0.0;
+#endif
+  irradiance = u_lightIrradiance[j] * scale;
 }

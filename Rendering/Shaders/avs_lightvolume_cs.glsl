@@ -10,7 +10,7 @@ uniform int u_channel;
 uniform ivec3 u_targetDimensions;
 uniform vec3 u_targetSpacing;
 
-uniform sampler3D u_averaged;   // averaged extinction on the data grid (texel centres = voxels)
+uniform sampler3D u_averaged;   // data grid (texel centres = voxels): .g averaged extinction
 uniform vec3 u_dataDimensions;
 uniform vec3 u_dataSpacing;
 uniform vec3 u_extent;
@@ -30,7 +30,7 @@ float Averaged(vec3 local)
   {
     return 0.0;
   }
-  return texture(u_averaged, (index + 0.5) / u_dataDimensions).r;
+  return texture(u_averaged, (index + 0.5) / u_dataDimensions).g;
 }
 
 float ForwardTransport(float tau)

@@ -2,9 +2,11 @@
 // Ray casting framework of the three mappers (ALGORITHM.md sections 2, 6 and 7): one ray per
 // pixel from the inverse view-projection (camera inside the volume and parallel projection
 // included), clipped to the volume box and to the opaque geometry's depth, marched front to back
-// in equal steps, with the mapper's effect snippet (declarations and per-sample code) put in
-// at the two effect markers below. The CPU reference (Rendering/Core/ReferenceRenderer.cxx) computes the
-// same sums in double precision.
+// in equal steps, with the mapper's effect snippet (declarations, per-ray set-up and per-sample
+// code) put in at the three effect markers below. An effect may define AVS_EFFECT_VOLUME (a
+// sampler3D with the scalar in .r, fetched once per sample instead of u_scalars) and
+// AVS_EFFECT_TERMINATION (then its bool EffectContinues(float T, int i) ends the ray). The CPU
+// reference (Rendering/Core/ReferenceRenderer.cxx) computes the same sums in double precision.
 
 //VTK::Output::Dec
 
@@ -100,16 +102,33 @@ void main()
   float dt = (t1 - t0) / float(steps);
   float offset = u_jitter == 1 ? Hash(gl_FragCoord.xy) : 0.5;
 
+  //AVS::Effect::Init
+
   vec3 L = vec3(0.0);
   float T = 1.0;
-  for (int i = 0; i < steps && T >= u_termination; ++i)
+  for (int i = 0; i < steps; ++i)
   {
+#ifdef AVS_EFFECT_TERMINATION
+    // The effect decides (it may still have light to add after T fell below the threshold).
+    if (!EffectContinues(T, i))
+      break;
+#else
+    if (T < u_termination)
+      break;
+#endif
     float t = t0 + (float(i) + offset) * dt;
     vec3 index = io + t * id;
-    vec4 here = Classify(ScalarAt(index));
+#ifdef AVS_EFFECT_VOLUME
+    // The effect's own texture, with the scalar in .r and its per-sample data in .gba.
+    vec4 voxel = texture(AVS_EFFECT_VOLUME, (index + 0.5) / u_dimensions);
+#else
+    vec4 voxel = vec4(ScalarAt(index));
+#endif
+    vec4 here = Classify(voxel.r);
     float extinction = exp(-here.a * dt);
     //AVS::Effect::Sample
-    T *= extinction;
+    if (T >= u_termination)
+      T *= extinction;
   }
   gl_FragData[0] = vec4(L, 1.0 - T);
 }

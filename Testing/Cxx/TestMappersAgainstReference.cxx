@@ -1,7 +1,9 @@
 // Each GPU mapper's picture against the CPU reference ray caster on the same scene: same
 // volume, transfer functions, lights, camera and sample distance, jittering off; in perspective
 // from outside, from inside the volume (with a spot light and a headlight added) and in parallel
-// projection. Metric: PSNR over the RGB picture; threshold 35 dB.
+// projection; and a fourth view with five lights (two light-volume textures), AO with direct
+// light, and an ambient radius too large for the ring buffer (the explicit look-ahead).
+// Metric: PSNR over the RGB picture; threshold 35 dB.
 #include "MapperTestScene.h"
 #include "TestErrorObserver.h"
 
@@ -43,10 +45,11 @@ int main(int argc, char* argv[])
 
   // Three views: perspective from outside (a directional and a point light); the camera inside
   // the volume (plus a spot light and a headlight); parallel projection.
-  for (int view = 0; view < 3; ++view)
+  for (int view = 0; view < 4; ++view)
   {
     vtkCamera* camera = renderer->GetActiveCamera();
     PlaceTestCamera(camera);
+    double radius = 0.08, step = sampleDistance, direct = 0.0;
     if (view == 1)
     {
       camera->SetPosition(0.15, 0.1, 0.45); // inside the box, in the shell's cavity
@@ -72,14 +75,36 @@ int main(int argc, char* argv[])
       camera->ParallelProjectionOn();
       camera->SetParallelScale(1.1);
     }
+    else if (view == 3)
+    {
+      // Back to the two test lights, plus three directional ones.
+      renderer->RemoveAllLights();
+      AddTestLights(renderer);
+      const double directions[3][3] = { { 1, 0, 0 }, { 0, -1, 0.3 }, { -0.5, 0.5, -1 } };
+      for (const auto& d : directions)
+      {
+        vtkNew<vtkLight> light;
+        light->SetLightTypeToSceneLight();
+        light->SetPosition(-d[0], -d[1], -d[2]);
+        light->SetFocalPoint(0, 0, 0);
+        light->SetIntensity(0.7);
+        renderer->AddLight(light);
+      }
+      // 2 r / step > vtkAVSRayCaster::MaximumRingSize.
+      radius = 1.2;
+      step = 0.004;
+      direct = 0.5;
+    }
     for (int m = 0; m < 3; ++m)
     {
       vtkAVSVolumeMapper* mapper = mappers[m];
       vtkNew<TestErrorObserver> errors;
       mapper->AddObserver(vtkCommand::ErrorEvent, errors);
       mapper->SetInputData(volumeData);
-      mapper->SetSampleDistance(sampleDistance);
+      mapper->SetSampleDistance(step);
       mapper->UseJitteringOff();
+      as->SetAmbientRadius(radius);
+      ao->SetDirectLightWeight(direct);
       vtkNew<vtkVolume> volume;
       volume->SetMapper(mapper);
       volume->SetProperty(property);
@@ -94,12 +119,14 @@ int main(int argc, char* argv[])
       reference->SetVolumeProperty(property);
       reference->SetRenderer(renderer);
       reference->SetImageSize(size, size);
-      reference->SetSampleDistance(sampleDistance);
+      reference->SetSampleDistance(step);
+      reference->SetDirectLightWeight(direct);
       reference->SetRenderMode(m);
       reference->SetOcclusionRadius(0.15);
-      reference->SetAmbientRadius(0.08);
-      reference->SetAnisotropy(0.4);
-      reference->SetAlbedo(0.9);
+      reference->SetAmbientRadius(radius);
+      // The AO mapper's direct light scatters with albedo 1 and g = 0.
+      reference->SetAnisotropy(m == 1 ? 0.0 : 0.4);
+      reference->SetAlbedo(m == 1 ? 1.0 : 0.9);
       reference->Update();
       const double psnr = Psnr(gpu, reference->GetOutput());
       const std::string tag = std::string(names[m]) + "_view" + std::to_string(view);

@@ -125,3 +125,93 @@ TEST(Preintegrator, ShippedTableAgreesWithAFreshLowCountRun)
     }
   }
 }
+
+TEST(Preintegrator, RefiningRecomputesOnlyTheCellsThatMissTheTarget)
+{
+  PreintegrationSettings first = Small(5);
+  first.TargetRelativeError = 0.03;
+  const ScatteringTable earlier = Preintegrate(first);
+
+  PreintegrationSettings more = first;
+  more.MaximumPaths = 8192;
+  more.MaximumPathsF = 8192;
+  PreintegrationStatistics stats;
+  more.Refine = &earlier;
+  const ScatteringTable refined = Preintegrate(more, &stats);
+  more.Refine = nullptr;
+  const ScatteringTable single = Preintegrate(more);
+
+  const auto& ax = earlier.Axes;
+  std::size_t kept = 0, redone = 0;
+  for (int k = 0; k < ax.NumberOfAnisotropy; ++k)
+  {
+    for (int j = 0; j < ax.NumberOfTau; ++j)
+    {
+      const bool meets = CellMeetsTarget(earlier, j, k, first.SignificanceThreshold, 0.03);
+      (meets ? kept : redone) += 1;
+      const std::size_t c = earlier.CellIndex(j, k);
+      EXPECT_EQ(refined.PathsF[c], meets ? earlier.PathsF[c] : single.PathsF[c]);
+      for (int l = 0; l < ax.NumberOfAlbedo; ++l)
+      {
+        const std::size_t f = earlier.FIndex(j, k, l);
+        // Refining gives what one run with the larger budget gives, cell for cell.
+        EXPECT_EQ(refined.F[f], single.F[f]);
+        EXPECT_EQ(refined.FError[f], single.FError[f]);
+        for (int i = 0; i < ax.NumberOfTheta; ++i)
+        {
+          const std::size_t e = earlier.AIndex(i, j, k, l);
+          EXPECT_EQ(refined.A[e], single.A[e]);
+          if (meets)
+          {
+            EXPECT_EQ(refined.A[e], earlier.A[e]);
+          }
+        }
+      }
+    }
+  }
+  // Both kinds of cell occur, and only the redone ones were traced.
+  EXPECT_GT(kept, 0u);
+  EXPECT_GT(redone, 0u);
+  EXPECT_EQ(stats.CellsComputed, redone + ax.NumberOfAnisotropy); // plus the analytic tau = 0
+  EXPECT_LT(refined.MaximumRelativeErrorF(), earlier.MaximumRelativeErrorF());
+
+  // A table with other axes is not used.
+  PreintegrationSettings other = Small(5);
+  other.Axes.NumberOfTheta = 10;
+  other.Refine = &earlier;
+  PreintegrationStatistics otherStats;
+  Preintegrate(other, &otherStats);
+  EXPECT_EQ(otherStats.CellsComputed,
+    static_cast<std::size_t>(other.Axes.NumberOfTau * other.Axes.NumberOfAnisotropy));
+}
+
+TEST(Preintegrator, ACheckpointResumesToTheSameTable)
+{
+  PreintegrationSettings s = Small(6);
+  s.Threads = 1;
+  s.TargetRelativeError = 0.2; // finished cells meet it, so resuming skips them
+  const ScatteringTable whole = Preintegrate(s);
+
+  // Checkpoints after every cell; keep the third one as a run cut short.
+  PreintegrationSettings cut = s;
+  cut.CheckpointSeconds = 0.0;
+  std::vector<ScatteringTable> checkpoints;
+  cut.Checkpoint = [&](const ScatteringTable& t) { checkpoints.push_back(t); };
+  Preintegrate(cut);
+  ASSERT_GE(checkpoints.size(), 3u);
+  const ScatteringTable& partial = checkpoints[2];
+  // Loadable: unfinished cells have F = 1 and no paths.
+  std::string error;
+  ScatteringTable reread;
+  ASSERT_TRUE(reread.ReadFromMemory(partial.Serialize(), &error)) << error;
+
+  PreintegrationSettings resume = s;
+  resume.Refine = &partial;
+  PreintegrationStatistics stats;
+  const ScatteringTable resumed = Preintegrate(resume, &stats);
+  EXPECT_LT(
+    stats.CellsComputed, static_cast<std::size_t>(s.Axes.NumberOfTau * s.Axes.NumberOfAnisotropy));
+  EXPECT_EQ(resumed.A, whole.A);
+  EXPECT_EQ(resumed.F, whole.F);
+  EXPECT_EQ(resumed.FError, whole.FError);
+}
