@@ -50,7 +50,7 @@ void Replace(std::string& s, const std::string& what, const std::string& with)
 
 // Compile-time choices of the ray-casting program for a frame (see avs_as_effect.glsl): the
 // ring buffer's size for the ambient-scattering look-ahead and the number of light textures.
-std::string ProgramDefines(const vtkAVSRayCaster::Frame& frame)
+std::string ProgramDefines(const vtkAVSRayCaster::Frame& frame, bool packedLights)
 {
   if (frame.Mode == avs::RenderMode::EmissionAbsorption)
   {
@@ -59,6 +59,12 @@ std::string ProgramDefines(const vtkAVSRayCaster::Frame& frame)
   const avs::ScatteringParameters& p = frame.Parameters;
   std::string defines =
     "#define AVS_NUMBER_OF_LIGHTS " + std::to_string(frame.Lights.size()) + "\n";
+  int positional = 0;
+  for (std::size_t j = 0; j < frame.Lights.size(); ++j)
+  {
+    positional |= frame.Lights[j].Type == avs::LightType::Positional ? 1 << j : 0;
+  }
+  defines += "#define AVS_POSITIONAL_LIGHTS " + std::to_string(positional) + "\n";
   if (std::any_of(
         frame.Lights.begin(), frame.Lights.end(), [](const avs::Light& l) { return l.IsSpot(); }))
   {
@@ -83,8 +89,19 @@ std::string ProgramDefines(const vtkAVSRayCaster::Frame& frame)
   defines += ring > vtkAVSRayCaster::MaximumRingSize
     ? "#define AVS_LOOKAHEAD_EXPLICIT\n"
     : "#define AVS_RING " + std::to_string(ring) + "\n";
-  defines +=
-    frame.Lights.size() > 4 ? "#define AVS_LIGHT_TEXTURES 2\n" : "#define AVS_LIGHT_TEXTURES 1\n";
+  // Light-volume textures to fetch: lights 0-3 in the first, 4-7 in the second; with packed
+  // lights, 0 and 1 come with the volume's own fetch.
+  const std::size_t n = frame.Lights.size();
+  const int textures = packedLights ? (n > 4 ? 2 : (n > 2 ? 1 : 0)) : (n > 4 ? 2 : 1);
+  defines += "#define AVS_LIGHT_TEXTURES " + std::to_string(textures) + "\n";
+  if (packedLights)
+  {
+    defines += "#define AVS_PACKED_LIGHTS\n";
+  }
+  if (p.EmissionWeight > 0.0 && p.Albedo < 1.0)
+  {
+    defines += "#define AVS_EMISSION\n";
+  }
   return defines;
 }
 
@@ -139,6 +156,21 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
   }
   this->Quad.reset();
   this->QuadMode = -1;
+  this->QuadDefines.clear();
+  this->LightsPacked = false;
+  if (window)
+  {
+    for (unsigned int* program :
+      { &this->ComputeProgram, &this->OcclusionProgram, &this->AverageProgram, &this->PackProgram })
+    {
+      if (*program)
+      {
+        glDeleteProgram(*program);
+      }
+      *program = 0;
+    }
+    this->ComputeSupport = -1; // asked again in the next context
+  }
   if (window == this->Window)
   {
     this->Window = nullptr;
@@ -217,13 +249,15 @@ bool vtkAVSRayCaster::UploadAveragedExtinction(const avs::Grid& scalars,
     error = "the averaged extinction is not on the data's grid";
     return false;
   }
-  std::vector<float> pairs(2 * averaged.Values.size());
+  // .ba: lights 0 and 1 when packed (PackLightVolumes), ones until then.
+  std::vector<float> texels(4 * averaged.Values.size(), 1.0f);
   for (std::size_t i = 0; i < averaged.Values.size(); ++i)
   {
-    pairs[2 * i] = scalars.Values[i];
-    pairs[2 * i + 1] = averaged.Values[i];
+    texels[4 * i] = scalars.Values[i];
+    texels[4 * i + 1] = averaged.Values[i];
   }
-  return this->UploadScalarGrid(this->Averaged, averaged, 2, pairs.data(), error);
+  this->LightsPacked = false;
+  return this->UploadScalarGrid(this->Averaged, averaged, 4, texels.data(), error);
 }
 
 bool vtkAVSRayCaster::UploadOcclusion(const avs::Grid& occlusion, std::string& error)
@@ -240,6 +274,7 @@ bool vtkAVSRayCaster::UploadLightVolumes(const std::vector<avs::Grid>& volumes, 
     const avs::Grid one(g, 1.0f);
     return this->UploadLightVolumes({ one }, error);
   }
+  this->LightsPacked = false;
   const avs::Grid& first = volumes.front();
   const std::size_t n = first.Values.size();
   for (int t = 0; t < 2; ++t)
@@ -391,8 +426,10 @@ bool vtkAVSRayCaster::SupportsComputeShaders()
   this->ComputeProgram = this->BuildComputeProgram(avs_lightvolume_cs, "light-volume");
   this->OcclusionProgram = this->BuildComputeProgram(avs_occlusion_cs, "ambient-occlusion");
   this->AverageProgram = this->BuildComputeProgram(avs_average_cs, "averaged-extinction");
+  this->PackProgram = this->BuildComputeProgram(avs_pack_cs, "light-packing");
   this->ComputeSupport =
-    this->ComputeProgram && this->OcclusionProgram && this->AverageProgram ? 1 : 0;
+    this->ComputeProgram && this->OcclusionProgram && this->AverageProgram && this->PackProgram ? 1
+                                                                                                : 0;
   return this->ComputeSupport == 1;
 }
 
@@ -443,10 +480,11 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
   vtkSmartPointer<vtkTextureObject> a, b;
   if (!this->UploadScalarGrid(a, shape, 1, shape.Values.data(), error) ||
     !this->UploadScalarGrid(b, shape, 1, shape.Values.data(), error) ||
-    !this->UploadScalarGrid(this->Averaged, shape, 2, nullptr, error))
+    !this->UploadScalarGrid(this->Averaged, shape, 4, nullptr, error))
   {
     return false;
   }
+  this->LightsPacked = false;
   const GLuint program = this->AverageProgram;
   this->Window->GetShaderCache()->ReleaseCurrentShader();
   glUseProgram(program);
@@ -465,7 +503,7 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
   // Pass 0: classify into a; then x: a -> b, y: b -> a, z: a -> Averaged (with the scalars).
   vtkTextureObject* sources[4] = { a, a, b, a };
   vtkTextureObject* targets[4] = { a, b, a, b };
-  glBindImageTexture(2, this->Averaged->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
+  glBindImageTexture(2, this->Averaged->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   for (int pass = 0; pass < 4; ++pass)
   {
     glBindImageTexture(0, sources[pass]->GetHandle(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
@@ -489,7 +527,7 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
   }
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
   glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-  glBindImageTexture(2, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
+  glBindImageTexture(2, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   glUseProgram(0);
   this->Scalars->Deactivate();
   this->Transfer->Deactivate();
@@ -593,6 +631,7 @@ bool vtkAVSRayCaster::ComputeLightVolume(int index,
     }
     this->ComputedDimensions = d;
   }
+  this->LightsPacked = false;
   const GLuint program = this->ComputeProgram;
   // The shader cache must rebind its own program afterwards.
   this->Window->GetShaderCache()->ReleaseCurrentShader();
@@ -735,6 +774,38 @@ void vtkAVSRayCaster::CaptureDepth(int x, int y, int width, int height)
   }
 }
 
+bool vtkAVSRayCaster::PackLightVolumes(const Frame& frame)
+{
+  vtkTextureObject* lights = this->LightVolumes[0];
+  if (frame.Lights.empty() || !this->Averaged || !lights || !this->SupportsComputeShaders() ||
+    frame.LightVolumeDimensions != frame.Dimensions ||
+    static_cast<int>(lights->GetWidth()) != frame.Dimensions[0] ||
+    static_cast<int>(lights->GetHeight()) != frame.Dimensions[1] ||
+    static_cast<int>(lights->GetDepth()) != frame.Dimensions[2])
+  {
+    return false;
+  }
+  if (this->LightsPacked)
+  {
+    return true;
+  }
+  const auto& d = frame.Dimensions;
+  this->Window->GetShaderCache()->ReleaseCurrentShader();
+  glUseProgram(this->PackProgram);
+  glBindImageTexture(0, lights->GetHandle(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+  glBindImageTexture(1, this->Averaged->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glUniform3i(glGetUniformLocation(this->PackProgram, "u_dimensions"), d[0], d[1], d[2]);
+  glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8),
+    static_cast<GLuint>((d[1] + 7) / 8),
+    static_cast<GLuint>(d[2]));
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+  glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glUseProgram(0);
+  this->LightsPacked = glGetError() == GL_NO_ERROR;
+  return this->LightsPacked;
+}
+
 bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::string& error)
 {
   vtkOpenGLRenderWindow* window = this->Window;
@@ -743,7 +814,9 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     error = "nothing uploaded";
     return false;
   }
-  if (!this->EnsureProgram(frame.Mode, ProgramDefines(frame)))
+  const bool packed =
+    frame.Mode == avs::RenderMode::AmbientScattering && this->PackLightVolumes(frame);
+  if (!this->EnsureProgram(frame.Mode, ProgramDefines(frame, packed)))
   {
     error = "the ray-casting shader did not compile or link (see the log above)";
     return false;

@@ -114,6 +114,9 @@ private:
     const float* data,
     std::string& error);
   bool EnsureProgram(avs::RenderMode mode, const std::string& defines);
+  /// Whether lights 0 and 1 can travel in the volume texture's .ba (compute shaders, light
+  /// volumes on the data's grid); if so, copies them there unless already done.
+  bool PackLightVolumes(const Frame& frame);
   /// Copies the depth of the viewport into Depth (multisampled framebuffers are resolved).
   void CaptureDepth(int x, int y, int width, int height);
   unsigned int BuildComputeProgram(const char* source, const char* what);
@@ -129,6 +132,8 @@ private:
   unsigned int ComputeProgram = 0;   ///< GL name of the light-volume compute program
   unsigned int OcclusionProgram = 0; ///< GL name of the ambient-occlusion compute program
   unsigned int AverageProgram = 0;   ///< GL name of the averaged-extinction compute program
+  unsigned int PackProgram = 0;      ///< GL name of the light-packing compute program
+  bool LightsPacked = false;         ///< lights 0 and 1 are in Averaged's .ba
   int ComputeSupport = -1;           ///< -1 unknown, 0 no, 1 yes
   std::array<int, 3> ComputedDimensions{ 0, 0, 0 };
   float TauNodes = 2.0f;

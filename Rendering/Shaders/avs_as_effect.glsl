@@ -8,14 +8,14 @@
 // AVS_RING entries: the same sum as in ALGORITHM.md with one classification per sample. The
 // ray caster sizes the ring from r and the sample distance when it builds the program; for a
 // radius too large for any ring it defines AVS_LOOKAHEAD_EXPLICIT instead, and x' is classified
-// explicitly (the same sum, slower). AVS_LIGHT_TEXTURES (1 or 2) says how many light-volume
-// textures the lights need. Both choices are compile-time because a software rasterizer runs
+// explicitly (the same sum, slower). AVS_LIGHT_TEXTURES (0-2) says how many light-volume
+// textures the lights need; AVS_EMISSION is defined when the emission term is not zero. Both choices are compile-time because a software rasterizer runs
 // every branch of a shader whatever its condition.
 #define AVS_EFFECT_VOLUME u_averaged
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 #define AVS_EFFECT_TERMINATION
 #endif
-uniform sampler3D u_averaged;      // data grid: .r the scalar, .g the averaged sigma_t
+uniform sampler3D u_averaged;      // data grid: .r scalar, .g averaged sigma_t, .ba lights 0-1
 uniform sampler3D u_lightVolumes0; // tube transmittance of lights 0-3 (rgba)
 uniform sampler3D u_lightVolumes1; // lights 4-7
 uniform vec3 u_lightVolumeDimensions;
@@ -27,6 +27,10 @@ uniform float u_ambientRadius;
 uniform float u_emissionWeight;
 
 int g_lag; // k: the look-ahead in samples
+// Per-ray constants of the lookups (index -> light-volume texture coordinate, table coordinates).
+vec3 g_lightScale, g_lightOffset;
+vec2 g_tableScale, g_tableOffset;
+float g_tauScale;
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 float g_ring[AVS_RING]; // T at the last AVS_RING samples; AVS_RING is a power of two > k
 #endif
@@ -34,25 +38,28 @@ float g_ring[AVS_RING]; // T at the last AVS_RING samples; AVS_RING is a power o
 // A(theta; tau) from the table slice; v is tau's table coordinate (see TableTauCoordinate).
 float InScattering(float cosTheta, float v)
 {
-  float theta = acos(clamp(cosTheta, -1.0, 1.0));
-  float u = sqrt(clamp(theta / PI, 0.0, 1.0));
-  return texture(u_table, (vec2(u, v) * (u_tableSize - 1.0) + 0.5) / u_tableSize).r;
+  float u = sqrt(acos(clamp(cosTheta, -1.0, 1.0)) * (1.0 / PI));
+  return texture(u_table, vec2(u, v) * g_tableScale + g_tableOffset).r;
 }
 
 float TableTauCoordinate(float tau)
 {
-  return log(1.0 + clamp(tau, 0.0, u_tableTauMaximum)) / log(1.0 + u_tableTauMaximum);
+  return log(1.0 + clamp(tau, 0.0, u_tableTauMaximum)) * g_tauScale;
 }
 
 // sigma_t(x') c(x') sum_j E_j(x') A(theta_j; r sigma~_t(x')) at the continuous voxel index x'
-// (world position `world`) for a ray along `direction`; `averaged` is sigma~_t(x').
-vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified, float averaged)
+// (world position `world`) for a ray along `direction`; `voxel` is the volume texture there.
+vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified, vec4 voxel)
 {
-  float v = TableTauCoordinate(u_ambientRadius * averaged);
-  // The tube transmittances of all lights at x', four to a texture fetch.
-  vec3 f = index / (u_dimensions - 1.0);
-  vec3 lc = (f * (u_lightVolumeDimensions - 1.0) + 0.5) / u_lightVolumeDimensions;
+  float v = TableTauCoordinate(u_ambientRadius * voxel.g);
+  // The tube transmittances of all lights at x', four to a texture fetch (lights 0 and 1 come
+  // in the volume texture's .ba when AVS_PACKED_LIGHTS is defined).
+  vec3 lc = index * g_lightScale + g_lightOffset;
+#if AVS_LIGHT_TEXTURES > 0
   vec4 tubes0 = texture(u_lightVolumes0, lc);
+#else
+  vec4 tubes0 = vec4(1.0);
+#endif
 #if AVS_LIGHT_TEXTURES > 1
   vec4 tubes1 = texture(u_lightVolumes1, lc);
 #else
@@ -63,7 +70,11 @@ vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified, float 
   {
     vec3 propagation, irradiance;
     LightAt(j, world, propagation, irradiance);
+#ifdef AVS_PACKED_LIGHTS
+    float tube = j == 0 ? voxel.b : (j == 1 ? voxel.a : (j < 4 ? tubes0[j] : tubes1[j - 4]));
+#else
     float tube = j < 4 ? tubes0[j] : tubes1[j - 4];
+#endif
     inscatter += irradiance * (tube * InScattering(dot(propagation, -direction), v));
   }
   return classified.a * classified.rgb * inscatter;
@@ -78,17 +89,25 @@ bool EffectContinues(float T, int i)
 #endif
 //AVS::Effect::Init
   g_lag = max(1, int(floor(u_ambientRadius / dt + 0.5)));
+  // lc = (index / (dims - 1) * (light dims - 1) + 0.5) / light dims; table texel centres.
+  g_lightScale = (u_lightVolumeDimensions - 1.0) / ((u_dimensions - 1.0) * u_lightVolumeDimensions);
+  g_lightOffset = 0.5 / u_lightVolumeDimensions;
+  g_tableScale = (u_tableSize - 1.0) / u_tableSize;
+  g_tableOffset = 0.5 / u_tableSize;
+  g_tauScale = 1.0 / log(1.0 + u_tableTauMaximum);
 //AVS::Effect::Sample
+#ifdef AVS_EMISSION
     if (T >= u_termination)
     {
       L += T * (1.0 - u_albedo) * here.a * u_emissionWeight * dt * here.rgb;
     }
+#endif
 #ifndef AVS_LOOKAHEAD_EXPLICIT
     g_ring[i & (AVS_RING - 1)] = T;
     float lagged = i >= g_lag ? g_ring[(i - g_lag) & (AVS_RING - 1)] : 0.0;
     if (here.a > 0.0 && lagged >= u_termination)
     {
-      L += lagged * dt * InScattered(index, origin + t * direction, direction, here, voxel.g);
+      L += lagged * dt * InScattered(index, origin + t * direction, direction, here, voxel);
     }
 #else
     if (i + g_lag < steps)
@@ -99,7 +118,7 @@ bool EffectContinues(float T, int i)
       vec4 s2 = Classify(aheadVoxel.r);
       if (s2.a > 0.0)
       {
-        L += T * dt * InScattered(ahead, origin + ta * direction, direction, s2, aheadVoxel.g);
+        L += T * dt * InScattered(ahead, origin + ta * direction, direction, s2, aheadVoxel);
       }
     }
 #endif

@@ -4,13 +4,14 @@
 // Pass 0 classifies the scalars into sigma_t; passes 1-3 are the box sums along x, y and z, one
 // invocation per line with a running window sum in double precision (the per-line summed-area
 // table); pass 3 also divides by the full box count, so voxels outside count as 0, and writes
-// the result beside the voxel's scalar into the ray caster's two-channel texture (.r scalar,
-// .g averaged sigma_t), so that one fetch per sample gives both.
+// the result beside the voxel's scalar into the ray caster's volume texture (.r scalar, .g
+// averaged sigma_t, .ba lights 0 and 1 once avs_pack_cs.glsl has run), so that one fetch per
+// sample gives them all.
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(r32f, binding = 0) uniform readonly image3D u_input;
 layout(r32f, binding = 1) uniform writeonly image3D u_output;
-layout(rg32f, binding = 2) uniform writeonly image3D u_final; // pass 3
+layout(rgba32f, binding = 2) uniform writeonly image3D u_final; // pass 3
 uniform int u_pass;
 uniform ivec3 u_dimensions;
 uniform int u_halfWidth;     // k along this pass's axis
@@ -59,7 +60,7 @@ void main()
     if (u_pass == 3)
     {
       ivec3 v = base + i * step;
-      imageStore(u_final, v, vec4(texelFetch(u_scalars, v, 0).r, float(sum) * scale, 0.0, 0.0));
+      imageStore(u_final, v, vec4(texelFetch(u_scalars, v, 0).r, float(sum) * scale, 1.0, 1.0));
     }
     else
     {

@@ -1,8 +1,9 @@
 //AVS::Lights::Dec
 // The renderer's lights in world space (Rendering/Core/Lights.h): type 0 directional, 1
 // positional; positional lights with a cone below 90 degrees are spots. The ray caster defines
-// AVS_NUMBER_OF_LIGHTS (so that loops over the lights unroll with constant indices) and
-// AVS_SPOT_LIGHTS when a spot is among them, and uploads directional lights with attenuation
+// AVS_NUMBER_OF_LIGHTS (so that loops over the lights unroll with constant indices),
+// AVS_POSITIONAL_LIGHTS (a bit mask of the positional ones) and AVS_SPOT_LIGHTS when a spot
+// is among them, and uploads directional lights with attenuation
 // (1, 0, 0) and lights other than spots with exponent 0: LightAt then needs no branch on the
 // light's type, which matters where every branch of a shader runs (software rasterizers).
 uniform int u_lightPositional[8];
@@ -17,15 +18,30 @@ uniform float u_lightExponent[8];
 // attenuation 1 / (a0 + a1 d + a2 d^2) and spot cone for positional lights).
 void LightAt(int j, vec3 x, out vec3 propagation, out vec3 irradiance)
 {
-  vec3 d = u_lightPositional[j] == 1 ? x - u_lightPosition[j] : u_lightAxis[j];
-  float dist = length(d);
-  propagation = dist > 0.0 ? d / dist : u_lightAxis[j];
-  vec3 a = u_lightAttenuation[j];
-  float att = a.x + a.y * dist + a.z * dist * dist;
-  float scale = att > 0.0 ? 1.0 / att : 0.0;
-#ifdef AVS_SPOT_LIGHTS
-  float c = dot(u_lightAxis[j], propagation);
-  scale = c >= u_lightConeCos[j] ? scale * exp2(u_lightExponent[j] * log2(max(c, 1e-30))) : 0.0;
+#ifdef AVS_POSITIONAL_LIGHTS
+  // Bit j set: light j is positional (known when the program is built, so that the unrolled
+  // loops keep only each light's own kind of code).
+  bool positional = ((AVS_POSITIONAL_LIGHTS >> j) & 1) == 1;
+#else
+  bool positional = u_lightPositional[j] == 1;
 #endif
-  irradiance = u_lightIrradiance[j] * scale;
+  if (!positional)
+  {
+    propagation = u_lightAxis[j];
+    irradiance = u_lightIrradiance[j];
+  }
+  else
+  {
+    vec3 d = x - u_lightPosition[j];
+    float dist = length(d);
+    propagation = dist > 0.0 ? d / dist : u_lightAxis[j];
+    vec3 a = u_lightAttenuation[j];
+    float att = a.x + a.y * dist + a.z * dist * dist;
+    float scale = att > 0.0 ? 1.0 / att : 0.0;
+#ifdef AVS_SPOT_LIGHTS
+    float c = dot(u_lightAxis[j], propagation);
+    scale = c >= u_lightConeCos[j] ? scale * exp2(u_lightExponent[j] * log2(max(c, 1e-30))) : 0.0;
+#endif
+    irradiance = u_lightIrradiance[j] * scale;
+  }
 }

@@ -1,9 +1,10 @@
 // Each GPU mapper's picture against the CPU reference ray caster on the same scene: same
 // volume, transfer functions, lights, camera and sample distance, jittering off; in perspective
 // from outside, from inside the volume (with a spot light and a headlight added) and in parallel
-// projection; and a fourth view with five lights (two light-volume textures), AO with direct
-// light, and an ambient radius too large for the ring buffer (the explicit look-ahead).
-// Metric: PSNR over the RGB picture; threshold 35 dB.
+// projection (with light volumes coarser than the data); and a fourth view with five lights (two
+// light-volume textures), AO with direct light, emission in AO and ambient scattering, and an
+// ambient radius too large for the ring buffer (the explicit look-ahead). Metric: PSNR over the RGB
+// picture; threshold 35 dB.
 #include "MapperTestScene.h"
 #include "TestErrorObserver.h"
 
@@ -49,7 +50,7 @@ int main(int argc, char* argv[])
   {
     vtkCamera* camera = renderer->GetActiveCamera();
     PlaceTestCamera(camera);
-    double radius = 0.08, step = sampleDistance, direct = 0.0;
+    double radius = 0.08, step = sampleDistance, direct = 0.0, emission = 0.0;
     if (view == 1)
     {
       camera->SetPosition(0.15, 0.1, 0.45); // inside the box, in the shell's cavity
@@ -94,6 +95,7 @@ int main(int argc, char* argv[])
       radius = 1.2;
       step = 0.004;
       direct = 0.5;
+      emission = 0.8;
     }
     for (int m = 0; m < 3; ++m)
     {
@@ -104,7 +106,11 @@ int main(int argc, char* argv[])
       mapper->SetSampleDistance(step);
       mapper->UseJitteringOff();
       as->SetAmbientRadius(radius);
+      // Parallel view: light volumes coarser than the data (not packed into the volume texture).
+      as->SetLightVolumeMaximumDimension(view == 2 ? 24 : 256);
       ao->SetDirectLightWeight(direct);
+      ao->SetEmissionWeight(emission);
+      as->SetEmissionWeight(emission);
       vtkNew<vtkVolume> volume;
       volume->SetMapper(mapper);
       volume->SetProperty(property);
@@ -121,9 +127,11 @@ int main(int argc, char* argv[])
       reference->SetImageSize(size, size);
       reference->SetSampleDistance(step);
       reference->SetDirectLightWeight(direct);
+      reference->SetEmissionWeight(emission);
       reference->SetRenderMode(m);
       reference->SetOcclusionRadius(0.15);
       reference->SetAmbientRadius(radius);
+      reference->SetLightVolumeMaximumDimension(view == 2 ? 24 : 256);
       // The AO mapper's direct light scatters with albedo 1 and g = 0.
       reference->SetAnisotropy(m == 1 ? 0.0 : 0.4);
       reference->SetAlbedo(m == 1 ? 1.0 : 0.9);
