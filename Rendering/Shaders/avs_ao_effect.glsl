@@ -8,6 +8,17 @@ uniform float u_emissionWeight;
 uniform float u_directLightWeight;
 uniform float u_albedo;
 uniform float u_anisotropy;
+
+#ifdef AVS_DIRECT_LIGHT
+// Light j's unshadowed single scattering towards the camera at `world`.
+vec3 DirectLight(int j, vec3 world, vec3 direction)
+{
+  vec3 propagation, irradiance;
+  LightAt(j, world, propagation, irradiance);
+  float mu = dot(propagation, -direction);
+  return irradiance * (4.0 * PI * u_albedo * HenyeyGreenstein(mu, u_anisotropy));
+}
+#endif
 //AVS::Effect::Sample
     {
       float ao = texture(u_occlusion, (index + 0.5) / u_dimensions).r;
@@ -18,13 +29,8 @@ uniform float u_anisotropy;
       {
         vec3 world = origin + t * direction;
         vec3 direct = vec3(0.0);
-        for (int j = 0; j < AVS_NUMBER_OF_LIGHTS; ++j)
-        {
-          vec3 propagation, irradiance;
-          LightAt(j, world, propagation, irradiance);
-          float mu = dot(propagation, -direction);
-          direct += irradiance * (4.0 * PI * u_albedo * HenyeyGreenstein(mu, u_anisotropy));
-        }
+#define AVS_DIRECT(j) direct += DirectLight(j, world, direction);
+        AVS_FOR_EACH_LIGHT(AVS_DIRECT)
         c += here.rgb * direct * u_directLightWeight;
       }
 #endif

@@ -31,20 +31,43 @@ int g_lag; // k: the look-ahead in samples
 vec3 g_lightScale, g_lightOffset;
 vec2 g_tableScale, g_tableOffset;
 float g_tauScale;
+float g_thetaCoordinate[8]; // per ray, for directional lights (their theta is constant on a ray)
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 float g_ring[AVS_RING]; // T at the last AVS_RING samples; AVS_RING is a power of two > k
 #endif
 
-// A(theta; tau) from the table slice; v is tau's table coordinate (see TableTauCoordinate).
-float InScattering(float cosTheta, float v)
+// The table's theta coordinate, sqrt(theta / pi) (denser near theta = 0).
+float ThetaCoordinate(float cosTheta)
 {
-  float u = sqrt(acos(clamp(cosTheta, -1.0, 1.0)) * (1.0 / PI));
+  return sqrt(acos(clamp(cosTheta, -1.0, 1.0)) * (1.0 / PI));
+}
+
+// A(theta; tau) from the table slice at theta coordinate u and tau coordinate v (see
+// ThetaCoordinate and TableTauCoordinate).
+float InScattering(float u, float v)
+{
   return texture(u_table, vec2(u, v) * g_tableScale + g_tableOffset).r;
 }
 
 float TableTauCoordinate(float tau)
 {
   return log(1.0 + clamp(tau, 0.0, u_tableTauMaximum)) * g_tauScale;
+}
+
+// E_j(x') A(theta_j; tau) of light j (a constant) at x'; `voxel` is the volume texture there,
+// tubes0 and tubes1 the light-volume textures, v the table coordinate of tau.
+vec3 LightInScattering(int j, vec3 world, vec3 direction, vec4 voxel, vec4 tubes0, vec4 tubes1, float v)
+{
+  vec3 propagation, irradiance;
+  LightAt(j, world, propagation, irradiance);
+#ifdef AVS_PACKED_LIGHTS
+  float tube = j == 0 ? voxel.b : (j == 1 ? voxel.a : (j < 4 ? tubes0[j] : tubes1[j - 4]));
+#else
+  float tube = j < 4 ? tubes0[j] : tubes1[j - 4];
+#endif
+  float u =
+    LightIsPositional(j) ? ThetaCoordinate(dot(propagation, -direction)) : g_thetaCoordinate[j];
+  return irradiance * (tube * InScattering(u, v));
 }
 
 // sigma_t(x') c(x') sum_j E_j(x') A(theta_j; r sigma~_t(x')) at the continuous voxel index x'
@@ -66,17 +89,8 @@ vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified, vec4 v
   vec4 tubes1 = vec4(1.0);
 #endif
   vec3 inscatter = vec3(0.0);
-  for (int j = 0; j < AVS_NUMBER_OF_LIGHTS; ++j)
-  {
-    vec3 propagation, irradiance;
-    LightAt(j, world, propagation, irradiance);
-#ifdef AVS_PACKED_LIGHTS
-    float tube = j == 0 ? voxel.b : (j == 1 ? voxel.a : (j < 4 ? tubes0[j] : tubes1[j - 4]));
-#else
-    float tube = j < 4 ? tubes0[j] : tubes1[j - 4];
-#endif
-    inscatter += irradiance * (tube * InScattering(dot(propagation, -direction), v));
-  }
+#define AVS_ADD_LIGHT(j) inscatter += LightInScattering(j, world, direction, voxel, tubes0, tubes1, v);
+  AVS_FOR_EACH_LIGHT(AVS_ADD_LIGHT)
   return classified.a * classified.rgb * inscatter;
 }
 
@@ -95,6 +109,8 @@ bool EffectContinues(float T, int i)
   g_tableScale = (u_tableSize - 1.0) / u_tableSize;
   g_tableOffset = 0.5 / u_tableSize;
   g_tauScale = 1.0 / log(1.0 + u_tableTauMaximum);
+#define AVS_THETA_COORDINATE(j) g_thetaCoordinate[j] = ThetaCoordinate(dot(u_lightAxis[j], -direction));
+  AVS_FOR_EACH_LIGHT(AVS_THETA_COORDINATE)
 //AVS::Effect::Sample
 #ifdef AVS_EMISSION
     if (T >= u_termination)

@@ -1,11 +1,35 @@
 //AVS::Lights::Dec
 // The renderer's lights in world space (Rendering/Core/Lights.h): type 0 directional, 1
 // positional; positional lights with a cone below 90 degrees are spots. The ray caster defines
-// AVS_NUMBER_OF_LIGHTS (so that loops over the lights unroll with constant indices),
+// AVS_NUMBER_OF_LIGHTS (for AVS_FOR_EACH_LIGHT below),
 // AVS_POSITIONAL_LIGHTS (a bit mask of the positional ones) and AVS_SPOT_LIGHTS when a spot
 // is among them, and uploads directional lights with attenuation
 // (1, 0, 0) and lights other than spots with exponent 0: LightAt then needs no branch on the
 // light's type, which matters where every branch of a shader runs (software rasterizers).
+// AVS_FOR_EACH_LIGHT(F) expands to F(0) F(1) ... for the lights: loops unrolled by hand, with
+// constant indices, since a compiler that does not unroll would index the arrays per sample.
+#ifdef AVS_NUMBER_OF_LIGHTS
+#if AVS_NUMBER_OF_LIGHTS > 7
+#define AVS_FOR_EACH_LIGHT(F) F(0) F(1) F(2) F(3) F(4) F(5) F(6) F(7)
+#elif AVS_NUMBER_OF_LIGHTS > 6
+#define AVS_FOR_EACH_LIGHT(F) F(0) F(1) F(2) F(3) F(4) F(5) F(6)
+#elif AVS_NUMBER_OF_LIGHTS > 5
+#define AVS_FOR_EACH_LIGHT(F) F(0) F(1) F(2) F(3) F(4) F(5)
+#elif AVS_NUMBER_OF_LIGHTS > 4
+#define AVS_FOR_EACH_LIGHT(F) F(0) F(1) F(2) F(3) F(4)
+#elif AVS_NUMBER_OF_LIGHTS > 3
+#define AVS_FOR_EACH_LIGHT(F) F(0) F(1) F(2) F(3)
+#elif AVS_NUMBER_OF_LIGHTS > 2
+#define AVS_FOR_EACH_LIGHT(F) F(0) F(1) F(2)
+#elif AVS_NUMBER_OF_LIGHTS > 1
+#define AVS_FOR_EACH_LIGHT(F) F(0) F(1)
+#elif AVS_NUMBER_OF_LIGHTS > 0
+#define AVS_FOR_EACH_LIGHT(F) F(0)
+#else
+#define AVS_FOR_EACH_LIGHT(F)
+#endif
+#endif
+
 uniform int u_lightPositional[8];
 uniform vec3 u_lightPosition[8];
 uniform vec3 u_lightAxis[8];       // normalize(focal point - position)
@@ -16,16 +40,20 @@ uniform float u_lightExponent[8];
 
 // Light j at x: its propagation direction and its irradiance without shadowing (VTK's
 // attenuation 1 / (a0 + a1 d + a2 d^2) and spot cone for positional lights).
-void LightAt(int j, vec3 x, out vec3 propagation, out vec3 irradiance)
+bool LightIsPositional(int j)
 {
 #ifdef AVS_POSITIONAL_LIGHTS
   // Bit j set: light j is positional (known when the program is built, so that the unrolled
   // loops keep only each light's own kind of code).
-  bool positional = ((AVS_POSITIONAL_LIGHTS >> j) & 1) == 1;
+  return ((AVS_POSITIONAL_LIGHTS >> j) & 1) == 1;
 #else
-  bool positional = u_lightPositional[j] == 1;
+  return u_lightPositional[j] == 1;
 #endif
-  if (!positional)
+}
+
+void LightAt(int j, vec3 x, out vec3 propagation, out vec3 irradiance)
+{
+  if (!LightIsPositional(j))
   {
     propagation = u_lightAxis[j];
     irradiance = u_lightIrradiance[j];

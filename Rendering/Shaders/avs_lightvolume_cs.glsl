@@ -21,6 +21,7 @@ uniform float u_tauMaximum;
 uniform float u_radius;
 
 uniform int u_positional;       // 0: directional, 1: positional
+float g_tauScale;               // (tau nodes - 1) / log(1 + tau maximum)
 uniform vec3 u_light;           // propagation direction (directional) or position (positional)
 
 float Averaged(vec3 local)
@@ -33,15 +34,16 @@ float Averaged(vec3 local)
   return texture(u_averaged, (index + 0.5) / u_dataDimensions).g;
 }
 
-float ForwardTransport(float tau)
+// log F(tau): the factors of a tube are summed as logarithms, one exp at the end.
+float LogForwardTransport(float tau)
 {
   if (!(tau > 0.0))
   {
-    return 1.0;
+    return 0.0;
   }
-  float v = log(1.0 + min(tau, u_tauMaximum)) / log(1.0 + u_tauMaximum) * (u_tauNodes - 1.0);
+  float v = log(1.0 + min(tau, u_tauMaximum)) * g_tauScale;
   float logGain = texture(u_logGain, (v + 0.5) / u_tauNodes).r;
-  return exp(-2.0 * tau + logGain);
+  return -2.0 * tau + logGain;
 }
 
 // Entry and exit of the ray o + t d with the box; false when it misses.
@@ -107,14 +109,15 @@ void main()
     float ratio = D / (2.0 * u_radius);
     int n = int(floor(ratio));
     float eta = ratio - float(n);
-    float t = 1.0, tn = 1.0;
+    g_tauScale = (u_tauNodes - 1.0) / log(1.0 + u_tauMaximum);
+    float logT = 0.0, logTn = 0.0;
     for (int i = 1; i <= n + 1; ++i)
     {
       vec3 m = x0 + d * ((2.0 * float(i - 1) + 1.0) * u_radius);
-      tn = t;
-      t *= ForwardTransport(u_radius * Averaged(m));
+      logTn = logT;
+      logT += LogForwardTransport(u_radius * Averaged(m));
     }
-    T = (1.0 - eta) * tn + eta * t;
+    T = (1.0 - eta) * exp(logTn) + eta * exp(logT);
   }
   vec4 value = imageLoad(u_target, voxel);
   value[u_channel] = T;
