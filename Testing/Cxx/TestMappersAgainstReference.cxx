@@ -15,6 +15,7 @@
 #include "vtkPNGWriter.h"
 #include "vtkVolumeReferenceRenderer.h"
 
+#include <cstdlib>
 #include <iostream>
 #include <string>
 
@@ -119,6 +120,10 @@ int main(int argc, char* argv[])
       auto gpu = Grab(window);
       renderer->RemoveVolume(volume);
       AVS_CHECK(errors->Errors == 0);
+      if (m == 2 && std::getenv("AVS_EXPECT_CPU_PRECOMPUTATION"))
+      {
+        AVS_CHECK(!as->GetLightVolumesOnGPU()); // the context really has no compute shaders
+      }
 
       vtkNew<vtkVolumeReferenceRenderer> reference;
       reference->SetInputData(volumeData);
