@@ -134,8 +134,10 @@ void CastRay(const VolumeScene& scene,
   t0 = std::max(t0, 0.0); // camera inside the volume
   const int n = std::max(1, static_cast<int>(std::ceil((t1 - t0) / p.SampleDistance - 1e-9)));
   const double dt = (t1 - t0) / n;
-  // Ambient scattering's look-ahead r, rounded to whole steps (as the GPU's ring buffer needs).
-  const int lag = std::max(1, static_cast<int>(std::floor(p.AmbientRadius / dt + 0.5)));
+  // Ambient scattering's look-ahead r = (lag + fraction) steps.
+  const double lagSteps = p.AmbientRadius / dt;
+  const int lag = static_cast<int>(std::floor(lagSteps));
+  const double fraction = lagSteps - lag;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   // sigma_t and colour at a local point: classification after interpolation, as on the GPU.
   auto classify = [&](const Vec3& x, double& sigmaT, Vec3& color)
@@ -186,12 +188,17 @@ void CastRay(const VolumeScene& scene,
     {
       // Emission (eq. 8.7).
       L = L + c * (T * (1.0 - p.Albedo) * sigmaT * p.EmissionWeight * dt);
-      // Ambient in-scattering from the ball around x' = x(t + r) (eqs. 8.8-8.9), with r rounded
-      // to `lag` steps; x' beyond the ray's end (outside the box) adds nothing.
-      const Vec3 xr = o + d * (t + lag * dt);
+      // Ambient in-scattering from the ball around x' (eqs. 8.8-8.9), weighted by the
+      // transmittance r before x'. x' is a sample, lag + 1 steps on, and the transmittance r
+      // before it lies between this sample's T before and after its extinction: interpolated
+      // linearly, T ((1 - fraction) extinction + fraction). This is the integral of
+      // ALGORITHM.md section 6 on the sample grid (section "Ray casting" of ARCHITECTURE.md);
+      // x' beyond the ray's end adds nothing.
+      const Vec3 xr = o + d * (t + (lag + 1) * dt);
+      const double lagged = T * ((1.0 - fraction) * extinction + fraction);
       double sigmaR = 0.0;
       Vec3 cr;
-      if (i + lag < n)
+      if (i + lag + 1 < n)
       {
         classify(xr, sigmaR, cr);
       }
@@ -208,7 +215,7 @@ void CastRay(const VolumeScene& scene,
           inscatter = inscatter +
             light.FreeIrradiance(world) * (transmittance * v.Slice.InScatteringCos(cosTheta, tau));
         }
-        L = L + Mul(cr, inscatter) * (T * sigmaR * dt);
+        L = L + Mul(cr, inscatter) * (lagged * sigmaR * dt);
       }
     }
     T *= extinction;

@@ -78,8 +78,9 @@ std::string ProgramDefines(const vtkAVSRayCaster::Frame& frame, bool packedLight
     }
     return defines;
   }
-  // A ray of two or more steps has dt >= sample distance / 2, so the look-ahead k = round(r /
-  // dt) is at most 2 r / sample distance + 1/2; a ray of one step adds no in-scattered light.
+  // A ray of two or more steps has dt >= sample distance / 2, so the look-ahead k = floor(r /
+  // dt), which needs k + 2 entries, is at most 2 r / sample distance; a ray of one step adds no
+  // in-scattered light.
   const double most = 2.0 * p.AmbientRadius / p.SampleDistance + 2.0;
   int ring = 16;
   while (ring < most && ring <= vtkAVSRayCaster::MaximumRingSize)

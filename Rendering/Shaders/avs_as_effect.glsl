@@ -2,15 +2,17 @@
 // Ambient scattering (ALGORITHM.md section 6): emission (eq. 8.7) and the light that the ball of
 // radius r around x' = x(t + r) scatters towards the camera (eqs. 8.8-8.9).
 //
-// The look-ahead r is rounded to a whole number k of steps, so that x' is the sample k steps
-// further on. Instead of classifying x' a second time, the ray adds the in-scattered light of
-// each sample with the transmittance it had k samples earlier, kept in a ring buffer of
-// AVS_RING entries: the same sum as in ALGORITHM.md with one classification per sample. The
-// ray caster sizes the ring from r and the sample distance when it builds the program; for a
-// radius too large for any ring it defines AVS_LOOKAHEAD_EXPLICIT instead, and x' is classified
-// explicitly (the same sum, slower). AVS_LIGHT_TEXTURES (0-2) says how many light-volume
-// textures the lights need; AVS_EMISSION is defined when the emission term is not zero. Both choices are compile-time because a software rasterizer runs
-// every branch of a shader whatever its condition.
+// Eq. 8.8 adds, for each t, the light from the ball around x(t + r) times T(t): the integral
+// of T(s - r) S(s) over the points s = t + r. Here each sample s = x_i adds its own in-scattered
+// light S (its classification is the one the ray made anyway) times the transmittance r before
+// it, interpolated linearly between the samples k and k + 1 back (r = (k + f) steps), kept in a
+// ring buffer of AVS_RING entries; samples in the first r of the ray add none, as in eq. 8.8.
+// The ray caster sizes the ring from r and the sample distance when it builds the program; for
+// a radius too large for any ring it defines AVS_LOOKAHEAD_EXPLICIT instead, and the sample
+// k + 1 steps ahead is classified explicitly: the same sum, slower. The CPU reference computes
+// this sum. AVS_LIGHT_TEXTURES (0-2) says how many light-volume textures the lights need;
+// AVS_EMISSION is defined when the emission term is not zero. The choices are compile-time
+// because a software rasterizer runs every branch of a shader whatever its condition.
 #define AVS_EFFECT_VOLUME u_averaged
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 #define AVS_EFFECT_TERMINATION
@@ -26,7 +28,8 @@ uniform float u_albedo;
 uniform float u_ambientRadius;
 uniform float u_emissionWeight;
 
-int g_lag; // k: the look-ahead in samples
+int g_lag;           // k = floor(r / dt)
+float g_lagFraction; // f = r / dt - k
 // Per-ray constants of the lookups (index -> light-volume texture coordinate, table coordinates).
 vec3 g_lightScale, g_lightOffset;
 vec2 g_tableScale, g_tableOffset;
@@ -97,12 +100,14 @@ vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified, vec4 v
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 bool EffectContinues(float T, int i)
 {
-  // Sample i still receives light while the transmittance k samples back is above the threshold.
-  return i < g_lag || g_ring[(i - g_lag) & (AVS_RING - 1)] >= u_termination;
+  // Sample i still receives light while the transmittance k + 1 samples back is above the
+  // threshold.
+  return i <= g_lag || g_ring[(i - g_lag - 1) & (AVS_RING - 1)] >= u_termination;
 }
 #endif
 //AVS::Effect::Init
-  g_lag = max(1, int(floor(u_ambientRadius / dt + 0.5)));
+  g_lag = int(floor(u_ambientRadius / dt));
+  g_lagFraction = u_ambientRadius / dt - float(g_lag);
   // lc = (index / (dims - 1) * (light dims - 1) + 0.5) / light dims; table texel centres.
   g_lightScale = (u_lightVolumeDimensions - 1.0) / ((u_dimensions - 1.0) * u_lightVolumeDimensions);
   g_lightOffset = 0.5 / u_lightVolumeDimensions;
@@ -120,21 +125,24 @@ bool EffectContinues(float T, int i)
 #endif
 #ifndef AVS_LOOKAHEAD_EXPLICIT
     g_ring[i & (AVS_RING - 1)] = T;
-    float lagged = i >= g_lag ? g_ring[(i - g_lag) & (AVS_RING - 1)] : 0.0;
-    if (here.a > 0.0 && lagged >= u_termination)
+    float older = i > g_lag ? g_ring[(i - g_lag - 1) & (AVS_RING - 1)] : 0.0;
+    if (here.a > 0.0 && older >= u_termination)
     {
+      float lagged = mix(g_ring[(i - g_lag) & (AVS_RING - 1)], older, g_lagFraction);
       L += lagged * dt * InScattered(index, origin + t * direction, direction, here, voxel);
     }
 #else
-    if (i + g_lag < steps)
+    if (i + g_lag + 1 < steps)
     {
-      float ta = t + float(g_lag) * dt;
+      // The sample k + 1 steps on, weighted by T interpolated r before it.
+      float lagged = T * mix(extinction, 1.0, g_lagFraction);
+      float ta = t + float(g_lag + 1) * dt;
       vec3 ahead = io + ta * id;
       vec4 aheadVoxel = texture(u_averaged, (ahead + 0.5) / u_dimensions);
       vec4 s2 = Classify(aheadVoxel.r);
       if (s2.a > 0.0)
       {
-        L += T * dt * InScattered(ahead, origin + ta * direction, direction, s2, aheadVoxel);
+        L += lagged * dt * InScattered(ahead, origin + ta * direction, direction, s2, aheadVoxel);
       }
     }
 #endif
