@@ -137,6 +137,7 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
   for (vtkTextureObject* t : { this->Scalars.Get(),
          this->Transfer.Get(),
          this->Averaged.Get(),
+         this->AveragedExtinction.Get(),
          this->Occlusion.Get(),
          this->Table.Get(),
          this->Depth.Get(),
@@ -148,8 +149,8 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
       t->ReleaseGraphicsResources(window);
     }
   }
-  this->Scalars = this->Transfer = this->Averaged = this->Occlusion = this->Table = this->Depth =
-    nullptr;
+  this->Scalars = this->Transfer = this->Averaged = this->AveragedExtinction = this->Occlusion =
+    this->Table = this->Depth = nullptr;
   this->LightVolumes[0] = this->LightVolumes[1] = nullptr;
   if (this->Quad && window)
   {
@@ -258,7 +259,8 @@ bool vtkAVSRayCaster::UploadAveragedExtinction(const avs::Grid& scalars,
     texels[4 * i + 1] = averaged.Values[i];
   }
   this->LightsPacked = false;
-  return this->UploadScalarGrid(this->Averaged, averaged, 4, texels.data(), error);
+  return this->UploadScalarGrid(this->Averaged, averaged, 4, texels.data(), error) &&
+    this->UploadScalarGrid(this->AveragedExtinction, averaged, 1, averaged.Values.data(), error);
 }
 
 bool vtkAVSRayCaster::UploadOcclusion(const avs::Grid& occlusion, std::string& error)
@@ -481,7 +483,8 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
   vtkSmartPointer<vtkTextureObject> a, b;
   if (!this->UploadScalarGrid(a, shape, 1, shape.Values.data(), error) ||
     !this->UploadScalarGrid(b, shape, 1, shape.Values.data(), error) ||
-    !this->UploadScalarGrid(this->Averaged, shape, 4, nullptr, error))
+    !this->UploadScalarGrid(this->Averaged, shape, 4, nullptr, error) ||
+    !this->UploadScalarGrid(this->AveragedExtinction, shape, 1, nullptr, error))
   {
     return false;
   }
@@ -503,7 +506,7 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
   glUniform1f(location("u_unitDistance"), static_cast<float>(unitDistance));
   // Pass 0: classify into a; then x: a -> b, y: b -> a, z: a -> Averaged (with the scalars).
   vtkTextureObject* sources[4] = { a, a, b, a };
-  vtkTextureObject* targets[4] = { a, b, a, b };
+  vtkTextureObject* targets[4] = { a, b, a, this->AveragedExtinction };
   glBindImageTexture(2, this->Averaged->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   for (int pass = 0; pass < 4; ++pass)
   {
@@ -612,7 +615,7 @@ bool vtkAVSRayCaster::ComputeLightVolume(int index,
   double radius,
   std::string& error)
 {
-  if (!this->SupportsComputeShaders() || !this->Averaged || !this->LogGain)
+  if (!this->SupportsComputeShaders() || !this->AveragedExtinction || !this->LogGain)
   {
     error = "no compute shaders, averaged extinction or table slice";
     return false;
@@ -646,8 +649,8 @@ bool vtkAVSRayCaster::ComputeLightVolume(int index,
     static_cast<float>(lightGrid.Spacing.x),
     static_cast<float>(lightGrid.Spacing.y),
     static_cast<float>(lightGrid.Spacing.z));
-  this->Averaged->Activate();
-  glUniform1i(location("u_averaged"), this->Averaged->GetTextureUnit());
+  this->AveragedExtinction->Activate();
+  glUniform1i(location("u_averaged"), this->AveragedExtinction->GetTextureUnit());
   glUniform3f(location("u_dataDimensions"),
     static_cast<float>(dataGrid.Dimensions[0]),
     static_cast<float>(dataGrid.Dimensions[1]),
@@ -679,7 +682,7 @@ bool vtkAVSRayCaster::ComputeLightVolume(int index,
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
   glUseProgram(0);
-  this->Averaged->Deactivate();
+  this->AveragedExtinction->Deactivate();
   this->LogGain->Deactivate();
   if (const GLenum status = glGetError())
   {

@@ -124,6 +124,9 @@ private:
   vtkOpenGLRenderWindow* Window = nullptr;
   vtkSmartPointer<vtkTextureObject> Scalars, Transfer, Averaged, Occlusion, Table, Depth, LogGain;
   vtkSmartPointer<vtkTextureObject> LightVolumes[2];
+  /// The averaged extinction alone (one channel), which the light-volume pass samples: a
+  /// quarter of the bytes per fetch of the ray caster's four-channel volume texture (Averaged).
+  vtkSmartPointer<vtkTextureObject> AveragedExtinction;
   vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFramebuffer;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   int QuadMode = -1;

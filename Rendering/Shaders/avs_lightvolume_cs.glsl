@@ -10,7 +10,7 @@ uniform int u_channel;
 uniform ivec3 u_targetDimensions;
 uniform vec3 u_targetSpacing;
 
-uniform sampler3D u_averaged;   // data grid (texel centres = voxels): .g averaged extinction
+uniform sampler3D u_averaged;   // averaged extinction on the data grid (texel centres = voxels)
 uniform vec3 u_dataDimensions;
 uniform vec3 u_dataSpacing;
 uniform vec3 u_extent;
@@ -31,7 +31,7 @@ float Averaged(vec3 local)
   {
     return 0.0;
   }
-  return texture(u_averaged, (index + 0.5) / u_dataDimensions).g;
+  return texture(u_averaged, (index + 0.5) / u_dataDimensions).r;
 }
 
 // log F(tau): the factors of a tube are summed as logarithms, one exp at the end.
