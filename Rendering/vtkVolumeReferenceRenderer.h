@@ -200,7 +200,7 @@ public:
 
   ///@{
   /**
-   * Largest light-volume dimension per axis (the data's dimensions, capped). Default 256.
+   * Largest light-volume dimension per axis (the data's dimensions, capped). Default 128.
    */
   vtkSetClampMacro(LightVolumeMaximumDimension, int, 2, 4096);
   vtkGetMacro(LightVolumeMaximumDimension, int);
@@ -248,7 +248,7 @@ protected:
   double DirectLightWeight = 0.0;
   double SampleDistance = 0.0;
   double TerminationTransmittance = 1.0 / 255.0;
-  int LightVolumeMaximumDimension = 256;
+  int LightVolumeMaximumDimension = 128;
   int SamplesPerPixel = 64;
   int Seed = 1;
 

@@ -98,22 +98,33 @@ struct Bench
 
 int main(int argc, char* argv[])
 {
-  int voxels = 256, size = 512, frames = 10;
+  int voxels = 256, size = 512, frames = 10, lightGrid = 256;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h")
     {
-      std::printf("Usage: avs-bench-mappers [--voxels N] [--size N] [--frames N]\n\n"
-                  "Median frame times of VTK's vtkGPUVolumeRayCastMapper and of the module's "
-                  "mappers on the built-in nebula\n(N^3 voxels, default 256), N x N pixels "
-                  "(default 512), over N frames (default 10), and their ratios.\n");
+      std::printf(
+        "Usage: avs-bench-mappers [--voxels N] [--size N] [--frames N] [--light-grid N]\n\n"
+        "Median frame times of VTK's vtkGPUVolumeRayCastMapper and of the module's "
+        "mappers on the built-in nebula\n(N^3 voxels, default 256), N x N pixels "
+        "(default 512), over N frames (default 10), and their ratios.\n"
+        "--light-grid sets the ambient-scattering mappers' LightVolumeMaximumDimension "
+        "(default 256, the mappers' default).\n");
       return 0;
     }
-    if (i + 1 < argc && (arg == "--voxels" || arg == "--size" || arg == "--frames"))
+    if (i + 1 < argc &&
+      (arg == "--voxels" || arg == "--size" || arg == "--frames" || arg == "--light-grid"))
     {
-      const int v = std::atoi(argv[++i]);
-      (arg == "--voxels" ? voxels : (arg == "--size" ? size : frames)) = std::max(2, v);
+      const int v = std::max(2, std::atoi(argv[++i]));
+      if (arg == "--voxels")
+        voxels = v;
+      else if (arg == "--size")
+        size = v;
+      else if (arg == "--frames")
+        frames = v;
+      else
+        lightGrid = v;
     }
   }
 
@@ -175,12 +186,14 @@ int main(int argc, char* argv[])
   b.SetLights(1);
 
   const double sampleDistance = 0.5 * g.Spacing.x;
-  std::printf("# scene: nebula %d^3, %d x %d pixels, sample distance %g, %d frames per mapper\n",
+  std::printf("# scene: nebula %d^3, %d x %d pixels, sample distance %g, %d frames per mapper, "
+              "light volumes at most %d per axis\n",
     voxels,
     size,
     size,
     sampleDistance,
-    frames);
+    frames,
+    lightGrid);
 
   vtkNew<vtkGPUVolumeRayCastMapper> vtkEA;
   vtkEA->SetInputData(b.Volume);
@@ -191,6 +204,8 @@ int main(int argc, char* argv[])
   vtkNew<vtkAmbientOcclusionVolumeMapper> ao;
   vtkNew<vtkAmbientScatteringVolumeMapper> as1;
   vtkNew<vtkAmbientScatteringVolumeMapper> as4;
+  as1->SetLightVolumeMaximumDimension(lightGrid);
+  as4->SetLightVolumeMaximumDimension(lightGrid);
   for (vtkAVSVolumeMapper* m : { static_cast<vtkAVSVolumeMapper*>(ea),
          static_cast<vtkAVSVolumeMapper*>(ao),
          static_cast<vtkAVSVolumeMapper*>(as1),

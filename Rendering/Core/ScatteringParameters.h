@@ -36,7 +36,7 @@ struct ScatteringParameters
   // Ray casting.
   double SampleDistance = 0.0; ///< world units; 0: automatic (half the smallest spacing)
   double TerminationTransmittance = 1.0 / 255.0; ///< stop a ray when T falls below
-  int LightVolumeMaximumDimension = 256; ///< light volumes use the data's size, capped by this
+  int LightVolumeMaximumDimension = 128; ///< light volumes use the data's size, capped by this
 
   /// The automatic ambient radius of a grid: 1/64 of the box diagonal, but at least one voxel.
   static double DefaultAmbientRadius(const GridGeometry& g)
