@@ -98,7 +98,7 @@ struct Bench
 
 int main(int argc, char* argv[])
 {
-  int voxels = 256, size = 512, frames = 10, lightGrid = 256;
+  int voxels = 256, size = 512, frames = 10, lightGrid = 0;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -110,7 +110,7 @@ int main(int argc, char* argv[])
         "mappers on the built-in nebula\n(N^3 voxels, default 256), N x N pixels "
         "(default 512), over N frames (default 10), and their ratios.\n"
         "--light-grid sets the ambient-scattering mappers' LightVolumeMaximumDimension "
-        "(default 256, the mappers' default).\n");
+        "(default: the mappers' own default).\n");
       return 0;
     }
     if (i + 1 < argc &&
@@ -193,7 +193,9 @@ int main(int argc, char* argv[])
     size,
     sampleDistance,
     frames,
-    lightGrid);
+    lightGrid > 0
+      ? lightGrid
+      : vtkSmartPointer<vtkAmbientScatteringVolumeMapper>::New()->GetLightVolumeMaximumDimension());
 
   vtkNew<vtkGPUVolumeRayCastMapper> vtkEA;
   vtkEA->SetInputData(b.Volume);
@@ -204,8 +206,11 @@ int main(int argc, char* argv[])
   vtkNew<vtkAmbientOcclusionVolumeMapper> ao;
   vtkNew<vtkAmbientScatteringVolumeMapper> as1;
   vtkNew<vtkAmbientScatteringVolumeMapper> as4;
-  as1->SetLightVolumeMaximumDimension(lightGrid);
-  as4->SetLightVolumeMaximumDimension(lightGrid);
+  if (lightGrid > 0)
+  {
+    as1->SetLightVolumeMaximumDimension(lightGrid);
+    as4->SetLightVolumeMaximumDimension(lightGrid);
+  }
   for (vtkAVSVolumeMapper* m : { static_cast<vtkAVSVolumeMapper*>(ea),
          static_cast<vtkAVSVolumeMapper*>(ao),
          static_cast<vtkAVSVolumeMapper*>(as1),
