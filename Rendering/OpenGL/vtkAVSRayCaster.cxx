@@ -48,8 +48,10 @@ void Replace(std::string& s, const std::string& what, const std::string& with)
   }
 }
 
-// Compile-time choices of the ray-casting program for a frame (see avs_as_effect.glsl): the
-// ring buffer's size for the ambient-scattering look-ahead and the number of light textures.
+// Compile-time choices of the ray-casting program for a frame (see avs_lights.glsl and the
+// effect files): the number of lights and which are positional or spots, AO's direct light,
+// and for ambient scattering the ring buffer's size (or the explicit look-ahead), the light
+// textures to fetch, packed lights and emission. One program per combination.
 std::string ProgramDefines(const vtkAVSRayCaster::Frame& frame, bool packedLights)
 {
   if (frame.Mode == avs::RenderMode::EmissionAbsorption)
