@@ -879,29 +879,24 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
 
   // Lights.
   const int n = static_cast<int>(std::min<std::size_t>(frame.Lights.size(), MaximumNumberOfLights));
-  int positional[MaximumNumberOfLights] = {};
   float position[MaximumNumberOfLights][3] = {}, axis[MaximumNumberOfLights][3] = {},
         irradiance[MaximumNumberOfLights][3] = {}, attenuation[MaximumNumberOfLights][3] = {};
   float coneCos[MaximumNumberOfLights] = {}, exponent[MaximumNumberOfLights] = {};
   for (int j = 0; j < n; ++j)
   {
     const avs::Light& l = frame.Lights[j];
-    positional[j] = l.Type == avs::LightType::Positional ? 1 : 0;
     const avs::Vec3 a = avs::Normalize(l.FocalPoint - l.Position);
     for (int k = 0; k < 3; ++k)
     {
       position[j][k] = static_cast<float>(l.Position[k]);
       axis[j][k] = static_cast<float>(a[k]);
       irradiance[j][k] = static_cast<float>(l.Irradiance[k]);
-      // Directional lights do not fall off: (1, 0, 0) keeps the shader free of type branches.
-      attenuation[j][k] = l.Type == avs::LightType::Positional
-        ? static_cast<float>(l.Attenuation[k])
-        : (k == 0 ? 1.0f : 0.0f);
+      attenuation[j][k] = static_cast<float>(l.Attenuation[k]);
     }
     coneCos[j] = l.IsSpot() ? static_cast<float>(std::cos(l.ConeAngle * avs::Pi / 180.0)) : -2.0f;
+    // Not a spot: no cone and exponent 0, so the shader's spot code leaves the light unchanged.
     exponent[j] = l.IsSpot() ? static_cast<float>(l.Exponent) : 0.0f;
   }
-  program->SetUniform1iv("u_lightPositional", MaximumNumberOfLights, positional);
   program->SetUniform3fv("u_lightPosition", MaximumNumberOfLights, position);
   program->SetUniform3fv("u_lightAxis", MaximumNumberOfLights, axis);
   program->SetUniform3fv("u_lightIrradiance", MaximumNumberOfLights, irradiance);

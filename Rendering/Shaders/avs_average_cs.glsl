@@ -4,9 +4,9 @@
 // Pass 0 classifies the scalars into sigma_t; passes 1-3 are the box sums along x, y and z, one
 // invocation per line with a running window sum in double precision (the per-line summed-area
 // table); pass 3 also divides by the full box count, so voxels outside count as 0, and writes
-// the result alone (for the light-volume pass) and beside the voxel's scalar into the ray caster's volume texture (.r scalar, .g
-// averaged sigma_t, .ba lights 0 and 1 once avs_pack_cs.glsl has run), so that one fetch per
-// sample gives them all.
+// the result twice: alone (for the light-volume pass) and beside the voxel's scalar in the ray
+// caster's volume texture (.r scalar, .g averaged sigma_t, .ba lights 0 and 1 once
+// avs_pack_cs.glsl has run), so that one fetch per sample gives them all.
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(r32f, binding = 0) uniform readonly image3D u_input;
@@ -54,13 +54,12 @@ void main()
   {
     sum += double(imageLoad(u_input, base + j * step).r);
   }
-  float scale = u_inverseCount;
   for (int i = 0; i < n; ++i)
   {
     if (u_pass == 3)
     {
       ivec3 v = base + i * step;
-      float averaged = float(sum) * scale;
+      float averaged = float(sum) * u_inverseCount;
       imageStore(u_output, v, vec4(averaged));
       imageStore(u_final, v, vec4(texelFetch(u_scalars, v, 0).r, averaged, 1.0, 1.0));
     }

@@ -1,11 +1,11 @@
 //AVS::Lights::Dec
 // The renderer's lights in world space (Rendering/Core/Lights.h): type 0 directional, 1
 // positional; positional lights with a cone below 90 degrees are spots. The ray caster defines
-// AVS_NUMBER_OF_LIGHTS (for AVS_FOR_EACH_LIGHT below),
-// AVS_POSITIONAL_LIGHTS (a bit mask of the positional ones) and AVS_SPOT_LIGHTS when a spot
-// is among them, and uploads directional lights with attenuation
-// (1, 0, 0) and lights other than spots with exponent 0: LightAt then needs no branch on the
-// light's type, which matters where every branch of a shader runs (software rasterizers).
+// AVS_NUMBER_OF_LIGHTS (for AVS_FOR_EACH_LIGHT below), AVS_POSITIONAL_LIGHTS (a bit mask of the
+// positional ones) and AVS_SPOT_LIGHTS when a spot is among them, and uploads positional lights
+// other than spots with exponent 0 and no cone, so that the spot code leaves them unchanged.
+// Known when the program is built, the lights' kinds cost no branch per sample, which matters
+// where every branch of a shader runs (software rasterizers).
 // AVS_FOR_EACH_LIGHT(F) expands to F(0) F(1) ... for the lights: loops unrolled by hand, with
 // constant indices, since a compiler that does not unroll would index the arrays per sample.
 #ifdef AVS_NUMBER_OF_LIGHTS
@@ -30,7 +30,6 @@
 #endif
 #endif
 
-uniform int u_lightPositional[8];
 uniform vec3 u_lightPosition[8];
 uniform vec3 u_lightAxis[8];       // normalize(focal point - position)
 uniform vec3 u_lightIrradiance[8]; // intensity x colour
@@ -38,19 +37,15 @@ uniform vec3 u_lightAttenuation[8];
 uniform float u_lightConeCos[8];   // cos(cone angle); -2 for no cone
 uniform float u_lightExponent[8];
 
-// Light j at x: its propagation direction and its irradiance without shadowing (VTK's
-// attenuation 1 / (a0 + a1 d + a2 d^2) and spot cone for positional lights).
+#ifdef AVS_POSITIONAL_LIGHTS // effects with lights (not EA)
+// Whether light j (a constant in the unrolled loops) is positional: bit j of the mask.
 bool LightIsPositional(int j)
 {
-#ifdef AVS_POSITIONAL_LIGHTS
-  // Bit j set: light j is positional (known when the program is built, so that the unrolled
-  // loops keep only each light's own kind of code).
   return ((AVS_POSITIONAL_LIGHTS >> j) & 1) == 1;
-#else
-  return u_lightPositional[j] == 1;
-#endif
 }
 
+// Light j at x: its propagation direction and its irradiance without shadowing (VTK's
+// attenuation 1 / (a0 + a1 d + a2 d^2) and spot cone for positional lights).
 void LightAt(int j, vec3 x, out vec3 propagation, out vec3 irradiance)
 {
   if (!LightIsPositional(j))
@@ -73,3 +68,4 @@ void LightAt(int j, vec3 x, out vec3 propagation, out vec3 irradiance)
     irradiance = u_lightIrradiance[j] * scale;
   }
 }
+#endif

@@ -21,8 +21,9 @@ uniform float u_tauMaximum;
 uniform float u_radius;
 
 uniform int u_positional;       // 0: directional, 1: positional
-float g_tauScale;               // (tau nodes - 1) / log(1 + tau maximum)
 uniform vec3 u_light;           // propagation direction (directional) or position (positional)
+
+float g_tauScale;               // (tau nodes - 1) / log(1 + tau maximum), set in main
 
 float Averaged(vec3 local)
 {

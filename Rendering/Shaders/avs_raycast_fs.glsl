@@ -33,11 +33,6 @@ float ScalarAt(vec3 index)
   return texture(u_scalars, (index + 0.5) / u_dimensions).r;
 }
 
-bool InsideVolume(vec3 index)
-{
-  return all(greaterThanEqual(index, vec3(-1e-4))) && all(lessThanEqual(index, u_dimensions - 1.0 + 1e-4));
-}
-
 // Colour and extinction of a scalar: sigma_t = -ln(1 - min(alpha, 1 - 1e-6)) / u.
 vec4 Classify(float s)
 {
@@ -45,11 +40,6 @@ vec4 Classify(float s)
   vec4 rgba = texture(u_transfer, (c * (u_transferSize - 1.0) + 0.5) / u_transferSize);
   float alpha = min(rgba.a, 1.0 - 1e-6);
   return vec4(rgba.rgb, alpha > 0.0 ? -log(1.0 - alpha) / u_unitDistance : 0.0);
-}
-
-vec4 ClassifyAt(vec3 index)
-{
-  return InsideVolume(index) ? Classify(ScalarAt(index)) : vec4(0.0);
 }
 
 // Henyey-Greenstein, mu = cosine between the propagation directions of incoming and scattered
