@@ -51,8 +51,9 @@ void Replace(std::string& s, const std::string& what, const std::string& with)
 // Compile-time choices of the ray-casting program for a frame (see avs_lights.glsl and the
 // effect files): the number of lights and which are positional or spots, AO's direct light,
 // and for ambient scattering the ring buffer's size (or the explicit look-ahead), the light
-// textures to fetch, packed lights and emission. One program per combination.
-std::string ProgramDefines(const vtkAVSRayCaster::Frame& frame, bool packedLights)
+// textures to fetch, packed lights, emission and the per-ray table columns of directional
+// lights. One program per combination.
+std::string ProgramDefines(const vtkAVSRayCaster::Frame& frame, bool packedLights, int tauNodes)
 {
   if (frame.Mode == avs::RenderMode::EmissionAbsorption)
   {
@@ -104,6 +105,13 @@ std::string ProgramDefines(const vtkAVSRayCaster::Frame& frame, bool packedLight
   if (p.EmissionWeight > 0.0 && p.Albedo < 1.0)
   {
     defines += "#define AVS_EMISSION\n";
+  }
+  // Directional lights read A from a per-ray column of the table (see avs_as_effect.glsl) when
+  // the table's tau axis is short enough to keep one column per light.
+  if (positional != (1 << n) - 1 && tauNodes >= 2 &&
+    tauNodes <= vtkAVSRayCaster::MaximumColumnNodes)
+  {
+    defines += "#define AVS_TABLE_COLUMN " + std::to_string(tauNodes) + "\n";
   }
   return defines;
 }
@@ -822,7 +830,8 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   }
   const bool packed =
     frame.Mode == avs::RenderMode::AmbientScattering && this->PackLightVolumes(frame);
-  if (!this->EnsureProgram(frame.Mode, ProgramDefines(frame, packed)))
+  if (!this->EnsureProgram(
+        frame.Mode, ProgramDefines(frame, packed, static_cast<int>(this->TableSize[1]))))
   {
     error = "the ray-casting shader did not compile or link (see the log above)";
     return false;

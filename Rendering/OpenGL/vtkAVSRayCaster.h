@@ -37,6 +37,9 @@ public:
   /// Largest ring buffer of the ambient-scattering look-ahead (entries); beyond it the
   /// look-ahead sample is classified explicitly.
   static constexpr int MaximumRingSize = 512;
+  /// Longest table tau axis for which directional lights keep a per-ray column of A (longer
+  /// axes are read from the table texture per sample).
+  static constexpr int MaximumColumnNodes = 64;
 
   vtkAVSRayCaster();
   ~vtkAVSRayCaster();

@@ -35,6 +35,12 @@ vec3 g_lightScale, g_lightOffset;
 vec2 g_tableScale, g_tableOffset;
 float g_tauScale;
 float g_thetaCoordinate[8]; // per ray, for directional lights (their theta is constant on a ray)
+#ifdef AVS_TABLE_COLUMN
+// Per ray, for directional lights: A(theta_j; tau) at the table's AVS_TABLE_COLUMN tau nodes,
+// interpolated in theta once. Interpolating this column in tau then gives the table's bilinear
+// value at (theta_j, tau) with two reads instead of a 2D texture fetch per light and sample.
+float g_column[AVS_NUMBER_OF_LIGHTS * AVS_TABLE_COLUMN];
+#endif
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 float g_ring[AVS_RING]; // T at the last AVS_RING samples; AVS_RING is a power of two > k
 #endif
@@ -52,6 +58,30 @@ float InScattering(float u, float v)
   return texture(u_table, vec2(u, v) * g_tableScale + g_tableOffset).r;
 }
 
+#ifdef AVS_TABLE_COLUMN
+// Fills light j's column for the theta coordinate u.
+void FillColumn(int j, float u)
+{
+  float x = u * (u_tableSize.x - 1.0);
+  int i = min(int(x), int(u_tableSize.x) - 2);
+  float f = x - float(i);
+  for (int n = 0; n < AVS_TABLE_COLUMN; ++n)
+  {
+    g_column[j * AVS_TABLE_COLUMN + n] =
+      mix(texelFetch(u_table, ivec2(i, n), 0).r, texelFetch(u_table, ivec2(i + 1, n), 0).r, f);
+  }
+}
+
+// A(theta_j; tau) of directional light j from its column at tau coordinate v.
+float ColumnInScattering(int j, float v)
+{
+  float x = v * float(AVS_TABLE_COLUMN - 1);
+  int n = min(int(x), AVS_TABLE_COLUMN - 2);
+  float f = x - float(n);
+  return mix(g_column[j * AVS_TABLE_COLUMN + n], g_column[j * AVS_TABLE_COLUMN + n + 1], f);
+}
+#endif
+
 float TableTauCoordinate(float tau)
 {
   return log(1.0 + clamp(tau, 0.0, u_tableTauMaximum)) * g_tauScale;
@@ -67,6 +97,12 @@ vec3 LightInScattering(int j, vec3 world, vec3 direction, vec4 voxel, vec4 tubes
   float tube = j == 0 ? voxel.b : (j == 1 ? voxel.a : (j < 4 ? tubes0[j] : tubes1[j - 4]));
 #else
   float tube = j < 4 ? tubes0[j] : tubes1[j - 4];
+#endif
+#ifdef AVS_TABLE_COLUMN
+  if (!LightIsPositional(j))
+  {
+    return irradiance * (tube * ColumnInScattering(j, v));
+  }
 #endif
   float u =
     LightIsPositional(j) ? ThetaCoordinate(dot(propagation, -direction)) : g_thetaCoordinate[j];
@@ -116,6 +152,10 @@ bool EffectContinues(float T, int i)
   g_tauScale = 1.0 / log(1.0 + u_tableTauMaximum);
 #define AVS_THETA_COORDINATE(j) g_thetaCoordinate[j] = ThetaCoordinate(dot(u_lightAxis[j], -direction));
   AVS_FOR_EACH_LIGHT(AVS_THETA_COORDINATE)
+#ifdef AVS_TABLE_COLUMN
+#define AVS_FILL_COLUMN(j) if (!LightIsPositional(j)) FillColumn(j, g_thetaCoordinate[j]);
+  AVS_FOR_EACH_LIGHT(AVS_FILL_COLUMN)
+#endif
 //AVS::Effect::Sample
 #ifdef AVS_EMISSION
     if (T >= u_termination)
