@@ -50,9 +50,12 @@ struct vtkAVSVolumeMapper::Internals
   // Ambient scattering.
   int AveragedKey[2] = { -1, -1 };
   double AveragedRadius = -1.0;
-  avs::Grid Averaged;
+  avs::Grid Averaged;         ///< on the light grid (CPU precomputation)
+  avs::Grid AveragedAtVoxels; ///< Averaged interpolated at the voxels
   int AveragedVersion = 0;
   int AveragedOnGPU = -1;
+  std::array<int, 3> AveragedDimensions{ 0, 0, 0 }; ///< the light grid it was computed on
+  int UploadedAveragedVersion = -1;                 ///< the CPU's averaged extinction last uploaded
   const avs::ScatteringTable* SliceTable = nullptr;
   double SliceG = 2.0, SliceAlbedo = -1.0;
   avs::ScatteringSlice Slice;
@@ -257,9 +260,17 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     return true;
   }
   avs::VolumeScene scene;
-  // Ambient scattering with compute shaders needs no extinction grid on the CPU.
-  const bool gpuScattering =
-    effect == 2 && this->PrecomputeOnGPU && in.RayCaster.SupportsComputeShaders();
+  // Ambient scattering with compute shaders needs no extinction grid on the CPU. (The GPU
+  // light-volume pass takes tables of up to MaximumTauNodes tau nodes; larger user tables are
+  // marched on the CPU.)
+  const avs::ScatteringTable* table = effect == 2 ? this->GetScatteringTable() : nullptr;
+  if (effect == 2 && !table)
+  {
+    return false; // the subclass reported why
+  }
+  const bool gpuScattering = effect == 2 && this->PrecomputeOnGPU &&
+    in.RayCaster.SupportsComputeShaders() &&
+    table->Axes.NumberOfTau <= vtkAVSRayCaster::MaximumTauNodes;
   if (!gpuScattering &&
     (in.ExtinctionKey[0] != in.DataVersion || in.ExtinctionKey[1] != in.TransferVersion))
   {
@@ -318,11 +329,6 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   }
 
   // Ambient scattering: table slice, averaged extinction, light volumes.
-  const avs::ScatteringTable* table = this->GetScatteringTable();
-  if (!table)
-  {
-    return false; // the subclass reported why
-  }
   if (table != in.SliceTable || rp.Anisotropy != in.SliceG || rp.Albedo != in.SliceAlbedo)
   {
     in.Slice = table->Slice(rp.Anisotropy, rp.Albedo);
@@ -336,12 +342,17 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     in.SliceAlbedo = rp.Albedo;
     ++in.SliceVersion;
   }
+  // The averaged extinction and the light volumes share the light grid.
+  const avs::GridGeometry lightGrid =
+    g.Resampled(avs::LightVolumeDimensions(g.Dimensions, rp.LightVolumeMaximumDimension));
   if (in.AveragedKey[0] != in.DataVersion || in.AveragedKey[1] != in.TransferVersion ||
-    in.AveragedRadius != rp.AmbientRadius || in.AveragedOnGPU != (gpuScattering ? 1 : 0))
+    in.AveragedRadius != rp.AmbientRadius || in.AveragedOnGPU != (gpuScattering ? 1 : 0) ||
+    in.AveragedDimensions != lightGrid.Dimensions)
   {
     if (gpuScattering)
     {
       if (!in.RayCaster.ComputeAveragedExtinction(g.Dimensions,
+            lightGrid.Dimensions,
             in.UnitDistance,
             avs::AveragingHalfWidths(rp.AmbientRadius, g.Spacing),
             error))
@@ -352,22 +363,18 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     }
     else
     {
-      in.Averaged = avs::AverageExtinction(in.Extinction, rp.AmbientRadius);
-      if (!in.RayCaster.UploadAveragedExtinction(in.Scalars, in.Averaged, error))
-      {
-        vtkErrorMacro("Cannot render: " << error);
-        return false;
-      }
+      // Uploaded with the light volumes below.
+      in.Averaged = avs::AverageExtinctionOn(in.Extinction, rp.AmbientRadius, lightGrid);
+      in.AveragedAtVoxels = avs::ResampleTrilinear(in.Averaged, g);
     }
     in.AveragedKey[0] = in.DataVersion;
     in.AveragedKey[1] = in.TransferVersion;
     in.AveragedOnGPU = gpuScattering ? 1 : 0;
     in.AveragedRadius = rp.AmbientRadius;
+    in.AveragedDimensions = lightGrid.Dimensions;
     ++in.AveragedVersion;
     ++this->NumberOfExtinctionRebuilds;
   }
-  const avs::GridGeometry lightGrid =
-    g.Resampled(avs::LightVolumeDimensions(g.Dimensions, rp.LightVolumeMaximumDimension));
   const bool gpu = gpuScattering;
   if (in.LightGridMaximum != rp.LightVolumeMaximumDimension || in.LightsOnGPU != (gpu ? 1 : 0))
   {
@@ -379,7 +386,8 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   in.LightGridDimensions = lightGrid.Dimensions;
   this->LightVolumesOnGPU = gpu;
   const std::size_t n = in.WorldLights.size();
-  bool changed = in.Lights.size() != n || !in.LightVolumesUploaded;
+  bool changed = in.Lights.size() != n || !in.LightVolumesUploaded ||
+    in.UploadedAveragedVersion != in.AveragedVersion;
   in.Lights.resize(n);
   for (std::size_t j = 0; j < n; ++j)
   {
@@ -395,7 +403,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
       if (gpu)
       {
         if (!in.RayCaster.ComputeLightVolume(
-              static_cast<int>(j), g, lightGrid, dataLight, rp.AmbientRadius, error))
+              static_cast<int>(j), lightGrid, dataLight, rp.AmbientRadius, error))
         {
           vtkErrorMacro("Cannot render: " << error);
           return false;
@@ -420,29 +428,21 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
       ++this->NumberOfLightVolumeRebuilds;
     }
   }
-  if (gpu)
-  {
-    in.LightVolumesUploaded = true;
-    if (n == 0 && !in.RayCaster.UploadLightVolumes({}, error))
-    {
-      vtkErrorMacro("Cannot render: " << error);
-      return false;
-    }
-  }
-  else if (changed)
+  if (!gpu && changed)
   {
     std::vector<avs::Grid> volumes;
     for (const auto& state : in.Lights)
     {
       volumes.push_back(state.Volume);
     }
-    if (!in.RayCaster.UploadLightVolumes(volumes, error))
+    if (!in.RayCaster.UploadScatteringVolumes(in.Scalars, in.AveragedAtVoxels, volumes, error))
     {
       vtkErrorMacro("Cannot render: " << error);
       return false;
     }
-    in.LightVolumesUploaded = true;
   }
+  in.LightVolumesUploaded = true;
+  in.UploadedAveragedVersion = in.AveragedVersion;
   return true;
 }
 
@@ -477,8 +477,7 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.Parameters = in.Parameters;
   frame.WorldToIndex = in.WorldToIndex;
   frame.Dimensions = in.Scalars.Geometry.Dimensions;
-  frame.LightVolumeDimensions =
-    in.Lights.empty() ? std::array<int, 3>{ 2, 2, 2 } : in.LightGridDimensions;
+  frame.LightVolumeDimensions = in.LightGridDimensions;
   frame.UnitDistance = in.UnitDistance;
   frame.Lights = in.WorldLights;
   frame.Jitter = this->UseJittering != 0;

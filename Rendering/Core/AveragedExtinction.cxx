@@ -1,5 +1,6 @@
 #include "AveragedExtinction.h"
 
+#include "GridFill.h"
 #include "Parallel.h"
 
 #include <algorithm>
@@ -118,6 +119,27 @@ Grid AverageExtinction(const Grid& sigmaT,
 {
   return BoxMean(
     sigmaT, AveragingHalfWidths(radius, sigmaT.Geometry.Spacing), statistics, progress);
+}
+
+Grid ResampleTrilinear(const Grid& values, const GridGeometry& target)
+{
+  if (target.Dimensions == values.Geometry.Dimensions)
+  {
+    return values;
+  }
+  const GridGeometry& source = values.Geometry;
+  return FillGrid(target,
+    [&](const Vec3& world, std::uint64_t&)
+    { return values.SampleIndex(source.WorldToIndex(world), 0.0); });
+}
+
+Grid AverageExtinctionOn(const Grid& sigmaT,
+  double radius,
+  const GridGeometry& target,
+  AveragingStatistics* statistics,
+  const std::function<void(double)>& progress)
+{
+  return ResampleTrilinear(AverageExtinction(sigmaT, radius, statistics, progress), target);
 }
 
 } // namespace avs

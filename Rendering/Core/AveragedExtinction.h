@@ -42,6 +42,20 @@ Grid AverageExtinction(const Grid& sigmaT,
   AveragingStatistics* statistics = nullptr,
   const std::function<void(double)>& progress = {});
 
+/// The averaged extinction stored on `target`, a grid covering the same box (coarser, e.g. the
+/// light volumes' grid; ALGORITHM.md section 3 allows it): the average on the grid of `sigmaT`,
+/// interpolated trilinearly at the points of `target`. The GPU computes the same values
+/// separably, interpolating each axis's box sums between voxels as it reduces that axis.
+Grid AverageExtinctionOn(const Grid& sigmaT,
+  double radius,
+  const GridGeometry& target,
+  AveragingStatistics* statistics = nullptr,
+  const std::function<void(double)>& progress = {});
+
+/// `values` interpolated trilinearly at the points of `target` (same box); a copy when the
+/// dimensions agree.
+Grid ResampleTrilinear(const Grid& values, const GridGeometry& target);
+
 /// Mean over an arbitrary half-width box (the building block of AverageExtinction).
 Grid BoxMean(const Grid& values,
   const std::array<int, 3>& halfWidths,

@@ -91,10 +91,12 @@ bool Precompute(const VolumeScene& scene,
   else if (mode == RenderMode::AmbientScattering)
   {
     out.Slice = table->Slice(p.Anisotropy, p.Albedo);
-    out.Averaged = AverageExtinction(out.Extinction, p.AmbientRadius);
-    report(0.2);
+    // The averaged extinction lives on the light volumes' grid, as in the GPU mappers.
     const GridGeometry lightGeometry =
       geometry.Resampled(LightVolumeDimensions(geometry.Dimensions, p.LightVolumeMaximumDimension));
+    out.Averaged = AverageExtinctionOn(out.Extinction, p.AmbientRadius, lightGeometry);
+    out.AveragedAtVoxels = ResampleTrilinear(out.Averaged, geometry);
+    report(0.2);
     const std::size_t n = scene.Lights.size();
     for (std::size_t j = 0; j < n; ++j)
     {
@@ -204,7 +206,7 @@ void CastRay(const VolumeScene& scene,
       }
       if (sigmaR > 0.0)
       {
-        const double tau = p.AmbientRadius * SampleLocal(v.Averaged, xr, 0.0);
+        const double tau = p.AmbientRadius * SampleLocal(v.AveragedAtVoxels, xr, 0.0);
         const Vec3 world = geometry.LocalToWorld(xr);
         Vec3 inscatter{ 0, 0, 0 };
         for (std::size_t j = 0; j < scene.Lights.size(); ++j)

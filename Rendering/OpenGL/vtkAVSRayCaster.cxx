@@ -51,9 +51,9 @@ void Replace(std::string& s, const std::string& what, const std::string& with)
 // Compile-time choices of the ray-casting program for a frame (see avs_lights.glsl and the
 // effect files): the number of lights and which are positional or spots, AO's direct light,
 // and for ambient scattering the ring buffer's size (or the explicit look-ahead), the light
-// textures to fetch, packed lights, emission and the per-ray table columns of directional
-// lights. One program per combination.
-std::string ProgramDefines(const vtkAVSRayCaster::Frame& frame, bool packedLights, int tauNodes)
+// textures to fetch, emission and the per-ray table columns of directional lights. One program
+// per combination.
+std::string ProgramDefines(const vtkAVSRayCaster::Frame& frame, int tauNodes)
 {
   if (frame.Mode == avs::RenderMode::EmissionAbsorption)
   {
@@ -93,23 +93,17 @@ std::string ProgramDefines(const vtkAVSRayCaster::Frame& frame, bool packedLight
   defines += ring > vtkAVSRayCaster::MaximumRingSize
     ? "#define AVS_LOOKAHEAD_EXPLICIT\n"
     : "#define AVS_RING " + std::to_string(ring) + "\n";
-  // Light-volume textures to fetch: lights 0-3 in the first, 4-7 in the second; with packed
-  // lights, 0 and 1 come with the volume's own fetch.
-  const std::size_t n = frame.Lights.size();
-  const int textures = packedLights ? (n > 4 ? 2 : (n > 2 ? 1 : 0)) : (n > 4 ? 2 : 1);
-  defines += "#define AVS_LIGHT_TEXTURES " + std::to_string(textures) + "\n";
-  if (packedLights)
-  {
-    defines += "#define AVS_PACKED_LIGHTS\n";
-  }
+  // Light-volume textures to fetch: lights 0-3, 4-7.
+  const int n = static_cast<int>(frame.Lights.size());
+  defines +=
+    "#define AVS_LIGHT_TEXTURES " + std::to_string(vtkAVSRayCaster::LightTexturesFor(n)) + "\n";
   if (p.EmissionWeight > 0.0 && p.Albedo < 1.0)
   {
     defines += "#define AVS_EMISSION\n";
   }
   // Directional lights read A from a per-ray column of the table (see avs_as_effect.glsl) when
   // the table's tau axis is short enough to keep one column per light.
-  if (positional != (1 << n) - 1 && tauNodes >= 2 &&
-    tauNodes <= vtkAVSRayCaster::MaximumColumnNodes)
+  if (positional != (1 << n) - 1 && tauNodes >= 2 && tauNodes <= vtkAVSRayCaster::MaximumTauNodes)
   {
     defines += "#define AVS_TABLE_COLUMN " + std::to_string(tauNodes) + "\n";
   }
@@ -146,22 +140,33 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
 {
   for (vtkTextureObject* t : { this->Scalars.Get(),
          this->Transfer.Get(),
-         this->Averaged.Get(),
+         this->ScalarsAveraged.Get(),
          this->AveragedExtinction.Get(),
          this->Occlusion.Get(),
          this->Table.Get(),
          this->Depth.Get(),
          this->LightVolumes[0].Get(),
-         this->LightVolumes[1].Get() })
+         this->LightVolumes[1].Get(),
+         this->Scratch[0].Get(),
+         this->Scratch[1].Get(),
+         this->Scratch[2].Get() })
   {
     if (t && window)
     {
       t->ReleaseGraphicsResources(window);
     }
   }
-  this->Scalars = this->Transfer = this->Averaged = this->AveragedExtinction = this->Occlusion =
-    this->Table = this->Depth = nullptr;
-  this->LightVolumes[0] = this->LightVolumes[1] = nullptr;
+  this->Scalars = this->Transfer = this->ScalarsAveraged = this->AveragedExtinction =
+    this->Occlusion = this->Table = this->Depth = nullptr;
+  for (auto& t : this->LightVolumes)
+  {
+    t = nullptr;
+  }
+  for (auto& t : this->Scratch)
+  {
+    t = nullptr;
+  }
+  this->LightTextureDimensions = { 0, 0, 0 };
   if (this->Quad && window)
   {
     this->Quad->ReleaseGraphicsResources(window);
@@ -169,11 +174,10 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
   this->Quad.reset();
   this->QuadMode = -1;
   this->QuadDefines.clear();
-  this->LightsPacked = false;
   if (window)
   {
     for (unsigned int* program :
-      { &this->ComputeProgram, &this->OcclusionProgram, &this->AverageProgram, &this->PackProgram })
+      { &this->ComputeProgram, &this->OcclusionProgram, &this->AverageProgram })
     {
       if (*program)
       {
@@ -201,12 +205,11 @@ int vtkAVSRayCaster::MaximumTextureSize3D() const
 }
 
 bool vtkAVSRayCaster::UploadScalarGrid(vtkSmartPointer<vtkTextureObject>& texture,
-  const avs::Grid& grid,
+  const std::array<int, 3>& d,
   int components,
   const float* data,
   std::string& error)
 {
-  const auto& d = grid.Geometry.Dimensions;
   const int limit = this->MaximumTextureSize3D();
   if (d[0] > limit || d[1] > limit || d[2] > limit)
   {
@@ -214,6 +217,13 @@ bool vtkAVSRayCaster::UploadScalarGrid(vtkSmartPointer<vtkTextureObject>& textur
       std::to_string(d[2]) +
       ") is too large for the GPU (largest 3D texture: " + std::to_string(limit) + " per axis)";
     return false;
+  }
+  if (texture && !data && texture->GetWidth() == static_cast<unsigned int>(d[0]) &&
+    texture->GetHeight() == static_cast<unsigned int>(d[1]) &&
+    texture->GetDepth() == static_cast<unsigned int>(d[2]) &&
+    texture->GetComponents() == components)
+  {
+    return true; // to be written on the GPU: the storage is reused
   }
   if (texture)
   {
@@ -249,66 +259,117 @@ bool vtkAVSRayCaster::UploadScalarGrid(vtkSmartPointer<vtkTextureObject>& textur
 
 bool vtkAVSRayCaster::UploadScalars(const avs::Grid& scalars, std::string& error)
 {
-  return this->UploadScalarGrid(this->Scalars, scalars, 1, scalars.Values.data(), error);
-}
-
-bool vtkAVSRayCaster::UploadAveragedExtinction(const avs::Grid& scalars,
-  const avs::Grid& averaged,
-  std::string& error)
-{
-  if (scalars.Values.size() != averaged.Values.size())
-  {
-    error = "the averaged extinction is not on the data's grid";
-    return false;
-  }
-  // .ba: lights 0 and 1 when packed (PackLightVolumes), ones until then.
-  std::vector<float> texels(4 * averaged.Values.size(), 1.0f);
-  for (std::size_t i = 0; i < averaged.Values.size(); ++i)
-  {
-    texels[4 * i] = scalars.Values[i];
-    texels[4 * i + 1] = averaged.Values[i];
-  }
-  this->LightsPacked = false;
-  return this->UploadScalarGrid(this->Averaged, averaged, 4, texels.data(), error) &&
-    this->UploadScalarGrid(this->AveragedExtinction, averaged, 1, averaged.Values.data(), error);
+  return this->UploadScalarGrid(
+    this->Scalars, scalars.Geometry.Dimensions, 1, scalars.Values.data(), error);
 }
 
 bool vtkAVSRayCaster::UploadOcclusion(const avs::Grid& occlusion, std::string& error)
 {
-  return this->UploadScalarGrid(this->Occlusion, occlusion, 1, occlusion.Values.data(), error);
+  return this->UploadScalarGrid(
+    this->Occlusion, occlusion.Geometry.Dimensions, 1, occlusion.Values.data(), error);
 }
 
-bool vtkAVSRayCaster::UploadLightVolumes(const std::vector<avs::Grid>& volumes, std::string& error)
+bool vtkAVSRayCaster::EnsureLightTextures(const std::array<int, 3>& dimensions,
+  int count,
+  std::string& error)
 {
-  if (volumes.empty())
+  if (dimensions != this->LightTextureDimensions)
   {
-    avs::GridGeometry g;
-    g.Dimensions = { 2, 2, 2 };
-    const avs::Grid one(g, 1.0f);
-    return this->UploadLightVolumes({ one }, error);
+    for (auto& t : this->LightVolumes)
+    {
+      if (t)
+      {
+        t->ReleaseGraphicsResources(this->Window);
+      }
+      t = nullptr;
+    }
+    this->LightTextureDimensions = dimensions;
   }
-  this->LightsPacked = false;
-  const avs::Grid& first = volumes.front();
-  const std::size_t n = first.Values.size();
-  for (int t = 0; t < 2; ++t)
+  std::vector<float> ones;
+  for (int t = 0; t < count && t < NumberOfLightTextures; ++t)
   {
-    std::vector<float> packed(4 * n, 1.0f);
+    if (!this->LightVolumes[t])
+    {
+      ones.resize(
+        4 * static_cast<std::size_t>(dimensions[0]) * dimensions[1] * dimensions[2], 1.0f);
+      if (!this->UploadScalarGrid(this->LightVolumes[t], dimensions, 4, ones.data(), error))
+      {
+        this->LightTextureDimensions = { 0, 0, 0 };
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool vtkAVSRayCaster::UploadScatteringVolumes(const avs::Grid& scalars,
+  const avs::Grid& averagedAtVoxels,
+  const std::vector<avs::Grid>& lights,
+  std::string& error)
+{
+  const std::size_t voxels = scalars.Values.size();
+  if (averagedAtVoxels.Values.size() != voxels)
+  {
+    error = "the averaged extinction is not on the data's grid";
+    return false;
+  }
+  std::vector<float> packed(2 * voxels);
+  for (std::size_t i = 0; i < voxels; ++i)
+  {
+    packed[2 * i] = scalars.Values[i];
+    packed[2 * i + 1] = averagedAtVoxels.Values[i];
+  }
+  if (!this->UploadScalarGrid(
+        this->ScalarsAveraged, scalars.Geometry.Dimensions, 2, packed.data(), error))
+  {
+    return false;
+  }
+  if (lights.empty())
+  {
+    return true;
+  }
+  const avs::Grid& first = lights.front();
+  const std::size_t n = first.Values.size();
+  for (const avs::Grid& light : lights)
+  {
+    if (light.Values.size() != n)
+    {
+      error = "the light volumes are not on one grid";
+      return false;
+    }
+  }
+  const int textures = LightTexturesFor(static_cast<int>(lights.size()));
+  for (int t = 0; t < NumberOfLightTextures; ++t)
+  {
+    if (t >= textures)
+    {
+      // Not needed now; released so that no texture of another size is left behind.
+      if (this->LightVolumes[t])
+      {
+        this->LightVolumes[t]->ReleaseGraphicsResources(this->Window);
+        this->LightVolumes[t] = nullptr;
+      }
+      continue;
+    }
+    packed.assign(4 * n, 1.0f);
     for (int c = 0; c < 4; ++c)
     {
       const std::size_t j = static_cast<std::size_t>(4 * t + c);
-      if (j < volumes.size())
+      if (j < lights.size())
       {
         for (std::size_t i = 0; i < n; ++i)
         {
-          packed[4 * i + c] = volumes[j].Values[i];
+          packed[4 * i + c] = lights[j].Values[i];
         }
       }
     }
-    if (!this->UploadScalarGrid(this->LightVolumes[t], first, 4, packed.data(), error))
+    if (!this->UploadScalarGrid(
+          this->LightVolumes[t], first.Geometry.Dimensions, 4, packed.data(), error))
     {
       return false;
     }
   }
+  this->LightTextureDimensions = first.Geometry.Dimensions;
   return true;
 }
 
@@ -362,23 +423,7 @@ bool vtkAVSRayCaster::UploadTableSlice(const avs::ScatteringSlice& slice, std::s
     this->Table = nullptr;
     return false;
   }
-  if (this->LogGain)
-  {
-    this->LogGain->ReleaseGraphicsResources(this->Window);
-  }
-  this->LogGain = vtkSmartPointer<vtkTextureObject>::New();
-  this->LogGain->SetContext(this->Window);
-  ConfigureSampling(this->LogGain);
-  if (!this->LogGain->Create1DFromRaw(static_cast<unsigned int>(slice.LogGain.size()),
-        1,
-        VTK_FLOAT,
-        const_cast<float*>(slice.LogGain.data())))
-  {
-    error = "the GPU could not allocate the forward-transport texture";
-    this->LogGain = nullptr;
-    return false;
-  }
-  this->TauNodes = static_cast<float>(slice.Axes.NumberOfTau);
+  this->LogGain = slice.LogGain; // a uniform array of the light-volume pass
   this->TableSize[0] = static_cast<float>(slice.Axes.NumberOfTheta);
   this->TableSize[1] = static_cast<float>(slice.Axes.NumberOfTau);
   this->TableTauMaximum = static_cast<float>(slice.Axes.TauMaximum);
@@ -436,13 +481,16 @@ bool vtkAVSRayCaster::SupportsComputeShaders()
   {
     return false;
   }
-  this->ComputeProgram = this->BuildComputeProgram(avs_lightvolume_cs, "light-volume");
+  // The light-volume pass keeps the table's log gain in an array of this many entries.
+  std::string lightVolume = avs_lightvolume_cs;
+  const std::size_t line = lightVolume.find('\n') + 1; // after #version
+  lightVolume.insert(
+    line, "#define AVS_MAXIMUM_TAU_NODES " + std::to_string(MaximumTauNodes) + "\n");
+  this->ComputeProgram = this->BuildComputeProgram(lightVolume.c_str(), "light-volume");
   this->OcclusionProgram = this->BuildComputeProgram(avs_occlusion_cs, "ambient-occlusion");
   this->AverageProgram = this->BuildComputeProgram(avs_average_cs, "averaged-extinction");
-  this->PackProgram = this->BuildComputeProgram(avs_pack_cs, "light-packing");
   this->ComputeSupport =
-    this->ComputeProgram && this->OcclusionProgram && this->AverageProgram && this->PackProgram ? 1
-                                                                                                : 0;
+    this->ComputeProgram && this->OcclusionProgram && this->AverageProgram ? 1 : 0;
   return this->ComputeSupport == 1;
 }
 
@@ -478,6 +526,7 @@ unsigned int vtkAVSRayCaster::BuildComputeProgram(const char* source, const char
 }
 
 bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimensions,
+  const std::array<int, 3>& lightDimensions,
   double unitDistance,
   const std::array<int, 3>& halfWidths,
   std::string& error)
@@ -487,23 +536,30 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
     error = "no compute shaders, scalars or transfer function";
     return false;
   }
-  avs::GridGeometry g;
-  g.Dimensions = dimensions;
-  const avs::Grid shape(g, 0.0f);
-  vtkSmartPointer<vtkTextureObject> a, b;
-  if (!this->UploadScalarGrid(a, shape, 1, shape.Values.data(), error) ||
-    !this->UploadScalarGrid(b, shape, 1, shape.Values.data(), error) ||
-    !this->UploadScalarGrid(this->Averaged, shape, 4, nullptr, error) ||
-    !this->UploadScalarGrid(this->AveragedExtinction, shape, 1, nullptr, error))
+  // Pass 0 classifies into Scratch[0] (data grid); the x pass shrinks x to the light grid (into
+  // Scratch[1]), the y pass y (into Scratch[2]), the z pass z (into AveragedExtinction); pass 4
+  // writes the scalars and the averaged extinction at the voxels into ScalarsAveraged.
+  const std::array<int, 3>& d = dimensions;
+  const std::array<int, 3>& l = lightDimensions;
+  const std::array<int, 3> shapes[4] = { d, { l[0], d[1], d[2] }, { l[0], l[1], d[2] }, l };
+  vtkSmartPointer<vtkTextureObject>* images[4] = {
+    &this->Scratch[0], &this->Scratch[1], &this->Scratch[2], &this->AveragedExtinction
+  };
+  for (int i = 0; i < 4; ++i)
+  {
+    if (!this->UploadScalarGrid(*images[i], shapes[i], 1, nullptr, error))
+    {
+      return false;
+    }
+  }
+  if (!this->UploadScalarGrid(this->ScalarsAveraged, d, 2, nullptr, error))
   {
     return false;
   }
-  this->LightsPacked = false;
   const GLuint program = this->AverageProgram;
   this->Window->GetShaderCache()->ReleaseCurrentShader();
   glUseProgram(program);
   auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
-  glUniform3i(location("u_dimensions"), dimensions[0], dimensions[1], dimensions[2]);
   const double count =
     (2.0 * halfWidths[0] + 1) * (2.0 * halfWidths[1] + 1) * (2.0 * halfWidths[2] + 1);
   glUniform1f(location("u_inverseCount"), static_cast<float>(1.0 / count));
@@ -514,39 +570,56 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
   glUniform2f(location("u_scalarRange"), this->ScalarRange[0], this->ScalarRange[1]);
   glUniform1f(location("u_transferSize"), this->TransferSize);
   glUniform1f(location("u_unitDistance"), static_cast<float>(unitDistance));
-  // Pass 0: classify into a; then x: a -> b, y: b -> a, z: a -> Averaged (with the scalars).
-  vtkTextureObject* sources[4] = { a, a, b, a };
-  vtkTextureObject* targets[4] = { a, b, a, this->AveragedExtinction };
-  glBindImageTexture(2, this->Averaged->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindImageTexture(2, this->ScalarsAveraged->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
   for (int pass = 0; pass < 4; ++pass)
   {
-    glBindImageTexture(0, sources[pass]->GetHandle(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
-    glBindImageTexture(1, targets[pass]->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+    // Pass p reads images[p - 1] (pass 0: the scalars) and writes images[p].
+    const std::array<int, 3>& in = pass == 0 ? d : shapes[pass - 1];
+    if (pass > 0)
+    {
+      glBindImageTexture(0, (*images[pass - 1])->GetHandle(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
+    }
+    glBindImageTexture(1, (*images[pass])->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
     glUniform1i(location("u_pass"), pass);
+    glUniform3i(location("u_dimensions"), in[0], in[1], in[2]);
     if (pass == 0)
     {
-      glDispatchCompute(static_cast<GLuint>((dimensions[0] + 7) / 8),
-        static_cast<GLuint>((dimensions[1] + 7) / 8),
-        static_cast<GLuint>(dimensions[2]));
+      glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8),
+        static_cast<GLuint>((d[1] + 7) / 8),
+        static_cast<GLuint>(d[2]));
     }
     else
     {
       const int axis = pass - 1;
-      const int u = axis == 0 ? dimensions[1] : dimensions[0];
-      const int v = axis == 2 ? dimensions[1] : dimensions[2];
+      const int u = axis == 0 ? in[1] : in[0];
+      const int v = axis == 2 ? in[1] : in[2];
       glUniform1i(location("u_halfWidth"), halfWidths[axis]);
+      glUniform1i(location("u_targetLength"), l[axis]);
       glDispatchCompute(static_cast<GLuint>((u + 7) / 8), static_cast<GLuint>((v + 7) / 8), 1);
     }
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   }
+  // Pass 4 samples AveragedExtinction as a texture: no image may write it meanwhile.
+  glBindImageTexture(1, this->Scratch[0]->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+  this->AveragedExtinction->Activate();
+  glUniform1i(location("u_averaged"), this->AveragedExtinction->GetTextureUnit());
+  glUniform3f(location("u_target"),
+    static_cast<float>(l[0]),
+    static_cast<float>(l[1]),
+    static_cast<float>(l[2]));
+  glUniform1i(location("u_pass"), 4);
+  glUniform3i(location("u_dimensions"), d[0], d[1], d[2]);
+  glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8),
+    static_cast<GLuint>((d[1] + 7) / 8),
+    static_cast<GLuint>(d[2]));
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  this->AveragedExtinction->Deactivate();
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
   glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-  glBindImageTexture(2, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindImageTexture(2, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
   glUseProgram(0);
   this->Scalars->Deactivate();
   this->Transfer->Deactivate();
-  a->ReleaseGraphicsResources(this->Window);
-  b->ReleaseGraphicsResources(this->Window);
   if (const GLenum status = glGetError())
   {
     error = "the averaged-extinction compute pass failed (GL error " + std::to_string(status) + ")";
@@ -567,12 +640,14 @@ bool vtkAVSRayCaster::ComputeOcclusion(const avs::Grid& extinction,
   }
   const avs::GridGeometry& g = extinction.Geometry;
   vtkSmartPointer<vtkTextureObject> sigma;
-  if (!this->UploadScalarGrid(sigma, extinction, 1, extinction.Values.data(), error))
+  if (!this->UploadScalarGrid(
+        sigma, extinction.Geometry.Dimensions, 1, extinction.Values.data(), error))
   {
     return false;
   }
   std::vector<float> zeros(g.NumberOfPoints(), 0.0f);
-  if (!this->UploadScalarGrid(this->Occlusion, extinction, 1, zeros.data(), error))
+  if (!this->UploadScalarGrid(
+        this->Occlusion, extinction.Geometry.Dimensions, 1, zeros.data(), error))
   {
     sigma->ReleaseGraphicsResources(this->Window);
     return false;
@@ -619,40 +694,36 @@ bool vtkAVSRayCaster::ComputeOcclusion(const avs::Grid& extinction,
 }
 
 bool vtkAVSRayCaster::ComputeLightVolume(int index,
-  const avs::GridGeometry& dataGrid,
   const avs::GridGeometry& lightGrid,
   const avs::Light& light,
   double radius,
   std::string& error)
 {
-  if (!this->SupportsComputeShaders() || !this->AveragedExtinction || !this->LogGain)
+  if (!this->SupportsComputeShaders() || !this->AveragedExtinction || this->LogGain.size() < 2)
   {
     error = "no compute shaders, averaged extinction or table slice";
     return false;
   }
-  const auto& d = lightGrid.Dimensions;
-  if (!this->LightVolumes[0] || this->ComputedDimensions != d)
+  if (this->LogGain.size() > static_cast<std::size_t>(MaximumTauNodes))
   {
-    // Two packed textures of ones on the light grid.
-    std::vector<float> ones(4 * lightGrid.NumberOfPoints(), 1.0f);
-    for (int t = 0; t < 2; ++t)
-    {
-      avs::Grid shape(lightGrid);
-      if (!this->UploadScalarGrid(this->LightVolumes[t], shape, 4, ones.data(), error))
-      {
-        return false;
-      }
-    }
-    this->ComputedDimensions = d;
+    error = "the scattering table has more tau nodes than the GPU light-volume pass takes (" +
+      std::to_string(MaximumTauNodes) + ")";
+    return false;
   }
-  this->LightsPacked = false;
+  const auto& d = lightGrid.Dimensions;
+  // Channel c of texture t holds light 4 t + c.
+  const int texture = index / 4;
+  if (!this->EnsureLightTextures(d, texture + 1, error))
+  {
+    return false;
+  }
   const GLuint program = this->ComputeProgram;
   // The shader cache must rebind its own program afterwards.
   this->Window->GetShaderCache()->ReleaseCurrentShader();
   glUseProgram(program);
   auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
   glBindImageTexture(
-    0, this->LightVolumes[index / 4]->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+    0, this->LightVolumes[texture]->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
   glUniform1i(location("u_channel"), index % 4);
   glUniform3i(location("u_targetDimensions"), d[0], d[1], d[2]);
   glUniform3f(location("u_targetSpacing"),
@@ -661,28 +732,20 @@ bool vtkAVSRayCaster::ComputeLightVolume(int index,
     static_cast<float>(lightGrid.Spacing.z));
   this->AveragedExtinction->Activate();
   glUniform1i(location("u_averaged"), this->AveragedExtinction->GetTextureUnit());
-  glUniform3f(location("u_dataDimensions"),
-    static_cast<float>(dataGrid.Dimensions[0]),
-    static_cast<float>(dataGrid.Dimensions[1]),
-    static_cast<float>(dataGrid.Dimensions[2]));
-  glUniform3f(location("u_dataSpacing"),
-    static_cast<float>(dataGrid.Spacing.x),
-    static_cast<float>(dataGrid.Spacing.y),
-    static_cast<float>(dataGrid.Spacing.z));
-  const avs::Vec3 extent = dataGrid.LocalExtent();
+  const avs::Vec3 extent = lightGrid.LocalExtent();
   glUniform3f(location("u_extent"),
     static_cast<float>(extent.x),
     static_cast<float>(extent.y),
     static_cast<float>(extent.z));
-  this->LogGain->Activate();
-  glUniform1i(location("u_logGain"), this->LogGain->GetTextureUnit());
-  glUniform1f(location("u_tauNodes"), this->TauNodes);
+  glUniform1fv(
+    location("u_logGain"), static_cast<GLsizei>(this->LogGain.size()), this->LogGain.data());
+  glUniform1i(location("u_tauNodes"), static_cast<GLint>(this->LogGain.size()));
   glUniform1f(location("u_tauMaximum"), this->TableTauMaximum);
   glUniform1f(location("u_radius"), static_cast<float>(radius));
   const bool positional = light.Type == avs::LightType::Positional;
   const avs::Vec3 l = positional
-    ? dataGrid.WorldToLocal(light.Position)
-    : dataGrid.WorldToLocalDirection(avs::Normalize(light.FocalPoint - light.Position));
+    ? lightGrid.WorldToLocal(light.Position)
+    : lightGrid.WorldToLocalDirection(avs::Normalize(light.FocalPoint - light.Position));
   glUniform1i(location("u_positional"), positional ? 1 : 0);
   glUniform3f(
     location("u_light"), static_cast<float>(l.x), static_cast<float>(l.y), static_cast<float>(l.z));
@@ -693,7 +756,6 @@ bool vtkAVSRayCaster::ComputeLightVolume(int index,
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
   glUseProgram(0);
   this->AveragedExtinction->Deactivate();
-  this->LogGain->Deactivate();
   if (const GLenum status = glGetError())
   {
     error = "the light-volume compute pass failed (GL error " + std::to_string(status) + ")";
@@ -788,38 +850,6 @@ void vtkAVSRayCaster::CaptureDepth(int x, int y, int width, int height)
   }
 }
 
-bool vtkAVSRayCaster::PackLightVolumes(const Frame& frame)
-{
-  vtkTextureObject* lights = this->LightVolumes[0];
-  if (frame.Lights.empty() || !this->Averaged || !lights || !this->SupportsComputeShaders() ||
-    frame.LightVolumeDimensions != frame.Dimensions ||
-    static_cast<int>(lights->GetWidth()) != frame.Dimensions[0] ||
-    static_cast<int>(lights->GetHeight()) != frame.Dimensions[1] ||
-    static_cast<int>(lights->GetDepth()) != frame.Dimensions[2])
-  {
-    return false;
-  }
-  if (this->LightsPacked)
-  {
-    return true;
-  }
-  const auto& d = frame.Dimensions;
-  this->Window->GetShaderCache()->ReleaseCurrentShader();
-  glUseProgram(this->PackProgram);
-  glBindImageTexture(0, lights->GetHandle(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
-  glBindImageTexture(1, this->Averaged->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
-  glUniform3i(glGetUniformLocation(this->PackProgram, "u_dimensions"), d[0], d[1], d[2]);
-  glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8),
-    static_cast<GLuint>((d[1] + 7) / 8),
-    static_cast<GLuint>(d[2]));
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
-  glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
-  glUseProgram(0);
-  this->LightsPacked = glGetError() == GL_NO_ERROR;
-  return this->LightsPacked;
-}
-
 bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::string& error)
 {
   vtkOpenGLRenderWindow* window = this->Window;
@@ -828,10 +858,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     error = "nothing uploaded";
     return false;
   }
-  const bool packed =
-    frame.Mode == avs::RenderMode::AmbientScattering && this->PackLightVolumes(frame);
-  if (!this->EnsureProgram(
-        frame.Mode, ProgramDefines(frame, packed, static_cast<int>(this->TableSize[1]))))
+  if (!this->EnsureProgram(frame.Mode, ProgramDefines(frame, static_cast<int>(this->TableSize[1]))))
   {
     error = "the ray-casting shader did not compile or link (see the log above)";
     return false;
@@ -930,17 +957,24 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   }
   else if (frame.Mode == avs::RenderMode::AmbientScattering)
   {
-    if (!this->Averaged || !this->Table || !this->LightVolumes[0] || !this->LightVolumes[1])
+    const int textures = LightTexturesFor(n);
+    if (!this->Table || !this->ScalarsAveraged ||
+      (textures > 0 && frame.LightVolumeDimensions != this->LightTextureDimensions) ||
+      !std::all_of(this->LightVolumes,
+        this->LightVolumes + textures,
+        [](const vtkSmartPointer<vtkTextureObject>& t) { return t != nullptr; }))
     {
       error = "the scattering volumes are not uploaded";
       return false;
     }
-    this->Averaged->Activate();
-    program->SetUniformi("u_averaged", this->Averaged->GetTextureUnit());
-    this->LightVolumes[0]->Activate();
-    program->SetUniformi("u_lightVolumes0", this->LightVolumes[0]->GetTextureUnit());
-    this->LightVolumes[1]->Activate();
-    program->SetUniformi("u_lightVolumes1", this->LightVolumes[1]->GetTextureUnit());
+    this->ScalarsAveraged->Activate();
+    program->SetUniformi("u_scalarsAveraged", this->ScalarsAveraged->GetTextureUnit());
+    const char* names[NumberOfLightTextures] = { "u_lightVolumes0", "u_lightVolumes1" };
+    for (int t = 0; t < textures; ++t)
+    {
+      this->LightVolumes[t]->Activate();
+      program->SetUniformi(names[t], this->LightVolumes[t]->GetTextureUnit());
+    }
     const float lvd[3] = { static_cast<float>(frame.LightVolumeDimensions[0]),
       static_cast<float>(frame.LightVolumeDimensions[1]),
       static_cast<float>(frame.LightVolumeDimensions[2]) };
@@ -971,7 +1005,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
          this->Scalars.Get(),
          this->Transfer.Get(),
          this->Occlusion.Get(),
-         this->Averaged.Get(),
+         this->ScalarsAveraged.Get(),
          this->LightVolumes[0].Get(),
          this->LightVolumes[1].Get(),
          this->Table.Get() })

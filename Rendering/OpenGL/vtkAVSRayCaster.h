@@ -38,8 +38,13 @@ public:
   /// look-ahead sample is classified explicitly.
   static constexpr int MaximumRingSize = 512;
   /// Longest table tau axis for which directional lights keep a per-ray column of A (longer
-  /// axes are read from the table texture per sample).
-  static constexpr int MaximumColumnNodes = 64;
+  /// axes are read from the table texture per sample) and the GPU light-volume pass runs (it
+  /// keeps log F in an array; longer axes make the mapper march the light volumes on the CPU).
+  static constexpr int MaximumTauNodes = 64;
+  /// Packed light-volume textures: up to 8 lights, 4 channels each.
+  static constexpr int NumberOfLightTextures = 2;
+  /// How many of them `lights` lights need.
+  static int LightTexturesFor(int lights) { return (lights + 3) / 4; }
 
   vtkAVSRayCaster();
   ~vtkAVSRayCaster();
@@ -57,13 +62,13 @@ public:
   /// Texture uploads; return false and say why in `error` when the GPU refuses.
   bool UploadScalars(const avs::Grid& scalars, std::string& error);
   bool UploadTransferFunction(const avs::TransferFunction& tf, std::string& error);
-  /// The CPU's averaged extinction, stored beside the scalars (two channels: scalar, averaged)
-  /// as the ambient-scattering ray caster fetches them; both on the data's grid.
-  bool UploadAveragedExtinction(const avs::Grid& scalars,
-    const avs::Grid& averaged,
+  /// The CPU's ambient-scattering volumes as the ray caster fetches them: the scalars beside
+  /// the averaged extinction interpolated at the voxels (both on the data's grid, one
+  /// two-channel texture), and up to 8 light volumes on the light grid, four to an RGBA texture.
+  bool UploadScatteringVolumes(const avs::Grid& scalars,
+    const avs::Grid& averagedAtVoxels,
+    const std::vector<avs::Grid>& lights,
     std::string& error);
-  /// Up to 8 light volumes on one grid, packed four to an RGBA texture.
-  bool UploadLightVolumes(const std::vector<avs::Grid>& volumes, std::string& error);
 
   /// Ambient occlusion computed on the GPU from the extinction grid into the occlusion texture
   /// (at most 256 directions). Returns false when the context cannot, with the reason.
@@ -73,20 +78,23 @@ public:
     std::string& error);
 
   /// The averaged extinction computed on the GPU from the uploaded scalars and transfer function
-  /// (classification, then box sums along x, y, z with the half widths) into the averaged
-  /// texture. `dimensions` are the data's.
+  /// (classification on the data's grid `dimensions`, then box sums along x, y, z with the half
+  /// widths, each axis interpolated onto the light grid `lightDimensions` as it is summed) into
+  /// the averaged texture (light grid), then interpolated back at the voxels beside the scalars
+  /// into the ray caster's two-channel volume texture.
   bool ComputeAveragedExtinction(const std::array<int, 3>& dimensions,
+    const std::array<int, 3>& lightDimensions,
     double unitDistance,
     const std::array<int, 3>& halfWidths,
     std::string& error);
 
   /// Whether the context runs compute shaders (OpenGL 4.3), for the GPU precomputation.
   bool SupportsComputeShaders();
-  /// Light volumes computed on the GPU: allocates the two packed textures on `lightGrid` (once
-  /// per size), then tube-marches light `index` (< 8, given in the data's frame) into its
-  /// channel. Needs the averaged extinction and the table slice uploaded.
+  /// Light volumes computed on the GPU: tube-marches light `index` (< 8, given in the data's
+  /// frame) on `lightGrid` into its channel of the packed textures (allocated once per size).
+  /// Needs the averaged extinction (ComputeAveragedExtinction on the same grid) and the table
+  /// slice.
   bool ComputeLightVolume(int index,
-    const avs::GridGeometry& dataGrid,
     const avs::GridGeometry& lightGrid,
     const avs::Light& light,
     double radius,
@@ -111,25 +119,33 @@ public:
   bool Render(vtkRenderer* renderer, const Frame& frame, std::string& error);
 
 private:
+  /// A 3D float texture of `components` channels (data may be null: allocated, undefined).
   bool UploadScalarGrid(vtkSmartPointer<vtkTextureObject>& texture,
-    const avs::Grid& grid,
+    const std::array<int, 3>& dimensions,
     int components,
     const float* data,
     std::string& error);
   bool EnsureProgram(avs::RenderMode mode, const std::string& defines);
-  /// Whether lights 0 and 1 can travel in the volume texture's .ba (compute shaders, light
-  /// volumes on the data's grid); if so, copies them there unless already done.
-  bool PackLightVolumes(const Frame& frame);
+  /// The first `count` packed light-volume textures on the light grid `dimensions`, allocated
+  /// (filled with ones) where missing or of another size.
+  bool EnsureLightTextures(const std::array<int, 3>& dimensions, int count, std::string& error);
   /// Copies the depth of the viewport into Depth (multisampled framebuffers are resolved).
   void CaptureDepth(int x, int y, int width, int height);
   unsigned int BuildComputeProgram(const char* source, const char* what);
 
   vtkOpenGLRenderWindow* Window = nullptr;
-  vtkSmartPointer<vtkTextureObject> Scalars, Transfer, Averaged, Occlusion, Table, Depth, LogGain;
-  vtkSmartPointer<vtkTextureObject> LightVolumes[2];
-  /// The averaged extinction alone (one channel), which the light-volume pass samples: a
-  /// quarter of the bytes per fetch of the ray caster's four-channel volume texture (Averaged).
+  vtkSmartPointer<vtkTextureObject> Scalars, Transfer, Occlusion, Table, Depth;
+  std::vector<float> LogGain; ///< log(F(tau) exp(2 tau)) on the table's tau nodes
+  /// Data grid, for ambient scattering: .r scalar, .g averaged sigma_t at the voxel.
+  vtkSmartPointer<vtkTextureObject> ScalarsAveraged;
+  /// Packed on the light grid: (T0-T3), (T4-T7).
+  vtkSmartPointer<vtkTextureObject> LightVolumes[NumberOfLightTextures];
+  /// The averaged extinction on the light grid, which the light-volume pass samples.
   vtkSmartPointer<vtkTextureObject> AveragedExtinction;
+  /// The averaged-extinction pass's intermediate grids (sigma_t on the data grid, then reduced
+  /// along x and along y), kept between rebuilds: allocating them again costs more than the
+  /// pass on a software rasterizer.
+  vtkSmartPointer<vtkTextureObject> Scratch[3];
   vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFramebuffer;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   int QuadMode = -1;
@@ -138,11 +154,8 @@ private:
   unsigned int ComputeProgram = 0;   ///< GL name of the light-volume compute program
   unsigned int OcclusionProgram = 0; ///< GL name of the ambient-occlusion compute program
   unsigned int AverageProgram = 0;   ///< GL name of the averaged-extinction compute program
-  unsigned int PackProgram = 0;      ///< GL name of the light-packing compute program
-  bool LightsPacked = false;         ///< lights 0 and 1 are in Averaged's .ba
   int ComputeSupport = -1;           ///< -1 unknown, 0 no, 1 yes
-  std::array<int, 3> ComputedDimensions{ 0, 0, 0 };
-  float TauNodes = 2.0f;
+  std::array<int, 3> LightTextureDimensions{ 0, 0, 0 };
   bool DepthWarningGiven = false;
   float TransferSize = 1.0f;
   float ScalarRange[2] = { 0.0f, 1.0f };

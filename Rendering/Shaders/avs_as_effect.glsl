@@ -13,13 +13,18 @@
 // this sum. AVS_LIGHT_TEXTURES (0-2) says how many light-volume textures the lights need;
 // AVS_EMISSION is defined when the emission term is not zero. The choices are compile-time
 // because a software rasterizer runs every branch of a shader whatever its condition.
-#define AVS_EFFECT_VOLUME u_averaged
+#define AVS_EFFECT_VOLUME u_scalarsAveraged
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 #define AVS_EFFECT_TERMINATION
 #endif
-uniform sampler3D u_averaged;      // data grid: .r scalar, .g averaged sigma_t, .ba lights 0-1
-uniform sampler3D u_lightVolumes0; // tube transmittance of lights 0-3 (rgba)
-uniform sampler3D u_lightVolumes1; // lights 4-7
+uniform sampler3D u_scalarsAveraged; // data grid: .r scalar, .g averaged sigma_t
+// Light grid: tube transmittance of lights 0-3, then 4-7.
+#if AVS_LIGHT_TEXTURES > 0
+uniform sampler3D u_lightVolumes0;
+#endif
+#if AVS_LIGHT_TEXTURES > 1
+uniform sampler3D u_lightVolumes1;
+#endif
 uniform vec3 u_lightVolumeDimensions;
 uniform sampler2D u_table;         // A(theta, tau) for the current g and albedo
 uniform vec2 u_tableSize;          // theta nodes, tau nodes
@@ -87,17 +92,19 @@ float TableTauCoordinate(float tau)
   return log(1.0 + clamp(tau, 0.0, u_tableTauMaximum)) * g_tauScale;
 }
 
-// E_j(x') A(theta_j; tau) of light j (a constant) at x'; `voxel` is the volume texture there,
-// tubes0 and tubes1 the light-volume textures, v the table coordinate of tau.
-vec3 LightInScattering(int j, vec3 world, vec3 direction, vec4 voxel, vec4 tubes0, vec4 tubes1, float v)
+// E_j(x') A(theta_j; tau) of light j (a constant) at x'; `tube` is its tube transmittance
+// there, v the table coordinate of tau.
+// Light j's tube transmittance in the packed light-volume textures (lights 0-3, 4-7). j is a
+// constant in the unrolled loops, so this folds to one component.
+float Tube(int j, vec4 tubes0, vec4 tubes1)
+{
+  return j < 4 ? tubes0[clamp(j, 0, 3)] : tubes1[clamp(j - 4, 0, 3)];
+}
+
+vec3 LightInScattering(int j, vec3 world, vec3 direction, float tube, float v)
 {
   vec3 propagation, irradiance;
   LightAt(j, world, propagation, irradiance);
-#ifdef AVS_PACKED_LIGHTS
-  float tube = j == 0 ? voxel.b : (j == 1 ? voxel.a : (j < 4 ? tubes0[j] : tubes1[j - 4]));
-#else
-  float tube = j < 4 ? tubes0[j] : tubes1[j - 4];
-#endif
 #ifdef AVS_TABLE_COLUMN
   if (!LightIsPositional(j))
   {
@@ -110,12 +117,12 @@ vec3 LightInScattering(int j, vec3 world, vec3 direction, vec4 voxel, vec4 tubes
 }
 
 // sigma_t(x') c(x') sum_j E_j(x') A(theta_j; r sigma~_t(x')) at the continuous voxel index x'
-// (world position `world`) for a ray along `direction`; `voxel` is the volume texture there.
-vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified, vec4 voxel)
+// (world position `world`) for a ray along `direction`, with `classified` = (c, sigma_t) and
+// `averaged` = averaged sigma_t there.
+vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified, float averaged)
 {
-  float v = TableTauCoordinate(u_ambientRadius * voxel.g);
-  // The tube transmittances of all lights at x', four to a texture fetch (lights 0 and 1 come
-  // in the volume texture's .ba when AVS_PACKED_LIGHTS is defined).
+  float v = TableTauCoordinate(u_ambientRadius * averaged);
+  // The tube transmittances of all lights at x', four to a texture fetch.
   vec3 lc = index * g_lightScale + g_lightOffset;
 #if AVS_LIGHT_TEXTURES > 0
   vec4 tubes0 = texture(u_lightVolumes0, lc);
@@ -128,7 +135,7 @@ vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified, vec4 v
   vec4 tubes1 = vec4(1.0);
 #endif
   vec3 inscatter = vec3(0.0);
-#define AVS_ADD_LIGHT(j) inscatter += LightInScattering(j, world, direction, voxel, tubes0, tubes1, v);
+#define AVS_ADD_LIGHT(j) inscatter += LightInScattering(j, world, direction, Tube(j, tubes0, tubes1), v);
   AVS_FOR_EACH_LIGHT(AVS_ADD_LIGHT)
   return classified.a * classified.rgb * inscatter;
 }
@@ -169,7 +176,7 @@ bool EffectContinues(float T, int i)
     if (here.a > 0.0 && older >= u_termination)
     {
       float lagged = mix(g_ring[(i - g_lag) & (AVS_RING - 1)], older, g_lagFraction);
-      L += lagged * dt * InScattered(index, origin + t * direction, direction, here, voxel);
+      L += lagged * dt * InScattered(index, origin + t * direction, direction, here, voxel.g);
     }
 #else
     if (i + g_lag + 1 < steps)
@@ -178,11 +185,11 @@ bool EffectContinues(float T, int i)
       float lagged = T * mix(extinction, 1.0, g_lagFraction);
       float ta = t + float(g_lag + 1) * dt;
       vec3 ahead = io + ta * id;
-      vec4 aheadVoxel = texture(u_averaged, (ahead + 0.5) / u_dimensions);
+      vec4 aheadVoxel = texture(u_scalarsAveraged, (ahead + 0.5) / u_dimensions);
       vec4 s2 = Classify(aheadVoxel.r);
       if (s2.a > 0.0)
       {
-        L += lagged * dt * InScattered(ahead, origin + ta * direction, direction, s2, aheadVoxel);
+        L += lagged * dt * InScattered(ahead, origin + ta * direction, direction, s2, aheadVoxel.g);
       }
     }
 #endif

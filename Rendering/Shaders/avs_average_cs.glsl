@@ -1,27 +1,40 @@
 #version 430
 // The averaged extinction on the GPU (ALGORITHM.md section 3; the CPU version is
-// Rendering/Core/AveragedExtinction.cxx, which the tests hold this pass against).
-// Pass 0 classifies the scalars into sigma_t; passes 1-3 are the box sums along x, y and z, one
-// invocation per line with a running window sum in double precision (the per-line summed-area
-// table); pass 3 also divides by the full box count, so voxels outside count as 0, and writes
-// the result twice: alone (for the light-volume pass) and beside the voxel's scalar in the ray
-// caster's volume texture (.r scalar, .g averaged sigma_t, .ba lights 0 and 1 once
-// avs_pack_cs.glsl has run), so that one fetch per sample gives them all.
+// Rendering/Core/AveragedExtinction.cxx, AverageExtinctionOn, which the tests hold this pass
+// against), stored on the light volumes' grid (the data's grid or a coarser one over the same
+// box).
+// Pass 0 classifies the scalars into sigma_t on the data grid. Passes 1-3 take the box sums
+// along x, y and z: one invocation per line, a running window sum in double precision (the
+// per-line summed-area table) over the line's voxels, written at the target grid's points along
+// that axis by linear interpolation between the two voxels around each (so each pass shrinks
+// its axis to the target's size, and the three together give the data-grid average
+// interpolated trilinearly). Pass 3 also divides by the full box count, so voxels outside count
+// as 0; its result is what the light-volume pass samples. Pass 4 interpolates it back at the
+// data's voxels, beside each voxel's scalar, into the ray caster's two-channel volume texture
+// (.r scalar, .g averaged sigma_t), so that one fetch per sample gives both.
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(r32f, binding = 0) uniform readonly image3D u_input;
 layout(r32f, binding = 1) uniform writeonly image3D u_output;
-layout(rgba32f, binding = 2) uniform writeonly image3D u_final; // pass 3
+layout(rg32f, binding = 2) uniform writeonly image3D u_final; // pass 4
 uniform int u_pass;
-uniform ivec3 u_dimensions;
+uniform ivec3 u_dimensions;  // of u_input (pass 0: of the data)
+uniform int u_targetLength;  // points of the target grid along this pass's axis
 uniform int u_halfWidth;     // k along this pass's axis
 uniform float u_inverseCount; // 1 / prod(2 k_a + 1), applied in the last pass
 
-uniform sampler3D u_scalars;  // pass 0
+uniform sampler3D u_scalars;  // passes 0 and 4
+uniform sampler3D u_averaged; // pass 4: the result of pass 3, on the target grid
+uniform vec3 u_target;        // pass 4: the target grid's dimensions
 uniform sampler1D u_transfer; // pass 0: opacity in .a over u_scalarRange
 uniform vec2 u_scalarRange;
 uniform float u_transferSize;
 uniform float u_unitDistance;
+
+void Store(ivec3 v, double sum)
+{
+  imageStore(u_output, v, vec4(u_pass == 3 ? float(sum) * u_inverseCount : float(sum)));
+}
 
 void main()
 {
@@ -37,6 +50,18 @@ void main()
     imageStore(u_output, v, vec4(alpha > 0.0 ? -log(1.0 - alpha) / u_unitDistance : 0.0));
     return;
   }
+  if (u_pass == 4)
+  {
+    ivec3 v = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(v, u_dimensions)))
+      return;
+    // The voxel's position on the target grid (same box).
+    vec3 scale = max((u_target - 1.0) / max(vec3(u_dimensions) - 1.0, vec3(1.0)), vec3(0.0));
+    vec3 p = vec3(v) * scale;
+    float averaged = textureLod(u_averaged, (p + 0.5) / u_target, 0.0).r;
+    imageStore(u_final, v, vec4(texelFetch(u_scalars, v, 0).r, averaged, 0.0, 0.0));
+    return;
+  }
   // The line: this pass's axis varies, the two others come from the invocation.
   int axis = u_pass - 1;
   ivec2 other = ivec2(gl_GlobalInvocationID.xy);
@@ -49,24 +74,29 @@ void main()
   ivec3 base = axis == 0 ? ivec3(0, other.x, other.y)
                          : (axis == 1 ? ivec3(other.x, 0, other.y) : ivec3(other.x, other.y, 0));
   ivec3 step = ivec3(axis == 0 ? 1 : 0, axis == 1 ? 1 : 0, axis == 2 ? 1 : 0);
+  // Target point o sits at voxel position o * ratio along the axis.
+  double ratio = u_targetLength > 1 ? double(n - 1) / double(u_targetLength - 1) : 0.0;
   double sum = 0.0;
   for (int j = 0; j <= min(k, n - 1); ++j)
   {
     sum += double(imageLoad(u_input, base + j * step).r);
   }
-  for (int i = 0; i < n; ++i)
+  double previous = sum; // the window sum at voxel i - 1
+  int o = 0;
+  for (int i = 0; i < n && o < u_targetLength; ++i)
   {
-    if (u_pass == 3)
+    // Target points in (i - 1, i]: at most two (the ratio is at least 1).
+    for (int e = 0; e < 2; ++e)
     {
-      ivec3 v = base + i * step;
-      float averaged = float(sum) * u_inverseCount;
-      imageStore(u_output, v, vec4(averaged));
-      imageStore(u_final, v, vec4(texelFetch(u_scalars, v, 0).r, averaged, 1.0, 1.0));
+      double position = double(o) * ratio;
+      if (o < u_targetLength && (position <= double(i) || i == n - 1))
+      {
+        double w = clamp(position - double(i - 1), 0.0, 1.0);
+        Store(base + o * step, previous + (sum - previous) * w);
+        ++o;
+      }
     }
-    else
-    {
-      imageStore(u_output, base + i * step, vec4(float(sum)));
-    }
+    previous = sum;
     int add = i + k + 1;
     int remove = i - k;
     if (add < n)

@@ -2,21 +2,22 @@
 // Tube marching of one light into one channel of a packed light-volume texture
 // (ALGORITHM.md section 5; the CPU version is Rendering/Core/LightVolume.cxx, which the tests
 // hold this pass against). All positions are in the data's local frame: the volume box is
-// [0, u_extent], axis-aligned.
+// [0, u_extent], axis-aligned. The averaged extinction is on the target (light) grid.
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
-layout(rgba32f, binding = 0) uniform image3D u_target; // four lights, one per channel
+layout(rgba32f, binding = 0) uniform image3D u_target; // four channels, one of them this light
 uniform int u_channel;
 uniform ivec3 u_targetDimensions;
 uniform vec3 u_targetSpacing;
 
-uniform sampler3D u_averaged;   // averaged extinction on the data grid (texel centres = voxels)
-uniform vec3 u_dataDimensions;
-uniform vec3 u_dataSpacing;
+uniform sampler3D u_averaged;   // averaged extinction on the target grid (texel centres = points)
 uniform vec3 u_extent;
 
-uniform sampler1D u_logGain;    // log(F(tau) exp(2 tau)) on the table's tau nodes
-uniform float u_tauNodes;
+// log(F(tau) exp(2 tau)) on the table's tau nodes (at most AVS_MAXIMUM_TAU_NODES, which the
+// ray caster defines): read from an array rather than a texture, a software rasterizer's
+// texture fetch costing as much as the rest of a step.
+uniform float u_logGain[AVS_MAXIMUM_TAU_NODES];
+uniform int u_tauNodes;
 uniform float u_tauMaximum;
 uniform float u_radius;
 
@@ -27,12 +28,13 @@ float g_tauScale;               // (tau nodes - 1) / log(1 + tau maximum), set i
 
 float Averaged(vec3 local)
 {
-  vec3 index = local / u_dataSpacing;
-  if (any(lessThan(index, vec3(-1e-6))) || any(greaterThan(index, u_dataDimensions - 1.0 + 1e-6)))
+  vec3 index = local / u_targetSpacing;
+  vec3 dims = vec3(u_targetDimensions);
+  if (any(lessThan(index, vec3(-1e-6))) || any(greaterThan(index, dims - 1.0 + 1e-6)))
   {
     return 0.0;
   }
-  return texture(u_averaged, (index + 0.5) / u_dataDimensions).r;
+  return textureLod(u_averaged, (index + 0.5) / dims, 0.0).r;
 }
 
 // log F(tau): the factors of a tube are summed as logarithms, one exp at the end.
@@ -42,9 +44,11 @@ float LogForwardTransport(float tau)
   {
     return 0.0;
   }
-  float v = log(1.0 + min(tau, u_tauMaximum)) * g_tauScale;
-  float logGain = texture(u_logGain, (v + 0.5) / u_tauNodes).r;
-  return -2.0 * tau + logGain;
+  // Linear in log(1 + tau) between the nodes, as ScatteringSlice::ForwardTransport.
+  float x = log(1.0 + min(tau, u_tauMaximum)) * g_tauScale;
+  int n = clamp(int(x), 0, u_tauNodes - 2);
+  float f = clamp(x - float(n), 0.0, 1.0);
+  return -2.0 * tau + mix(u_logGain[n], u_logGain[n + 1], f);
 }
 
 // Entry and exit of the ray o + t d with the box; false when it misses.
@@ -110,7 +114,7 @@ void main()
     float ratio = D / (2.0 * u_radius);
     int n = int(floor(ratio));
     float eta = ratio - float(n);
-    g_tauScale = (u_tauNodes - 1.0) / log(1.0 + u_tauMaximum);
+    g_tauScale = float(u_tauNodes - 1) / log(1.0 + u_tauMaximum);
     float logT = 0.0, logTn = 0.0;
     for (int i = 1; i <= n + 1; ++i)
     {

@@ -109,7 +109,7 @@ void main()
     float t = t0 + (float(i) + offset) * dt;
     vec3 index = io + t * id;
 #ifdef AVS_EFFECT_VOLUME
-    // The effect's own texture, with the scalar in .r and its per-sample data in .gba.
+    // The effect's own texture, with the scalar in .r and its per-sample data in .g.
     vec4 voxel = texture(AVS_EFFECT_VOLUME, (index + 0.5) / u_dimensions);
 #else
     vec4 voxel = vec4(ScalarAt(index));

@@ -226,3 +226,31 @@ TEST(AveragedExtinction, PrecisionAt256CubedOnConstantAndShellFields)
     EXPECT_GT(nonZero, 400);
   }
 }
+
+// On a coarser grid over the same box (the light grid), the average is the data-grid average
+// interpolated trilinearly: exact where a coarse point falls on a voxel, between the averages
+// of the voxels around it elsewhere, and the plain average when the grids agree.
+TEST(AveragedExtinction, OnACoarserGridInterpolatesTheDataGridAverage)
+{
+  const Grid shell = Shell(Geometry(33, 25, 29, { 1.0, 1.5, 0.8 }));
+  const double radius = 2.5;
+  const Grid full = AverageExtinction(shell, radius);
+  EXPECT_EQ(AverageExtinctionOn(shell, radius, shell.Geometry).Values, full.Values);
+
+  // 33 -> 17 and 25 -> 13 put every coarse point on a voxel (index 2i); 29 -> 11 does not.
+  const GridGeometry coarse = shell.Geometry.Resampled({ 17, 13, 11 });
+  const Grid averaged = AverageExtinctionOn(shell, radius, coarse);
+  ASSERT_EQ(averaged.Geometry.Dimensions, coarse.Dimensions);
+  for (int k = 0; k < 11; ++k)
+    for (int j = 0; j < 13; ++j)
+      for (int i = 0; i < 17; ++i)
+      {
+        // Along z the coarse point k sits at voxel 2.8 k: between 2.8 k's two neighbours.
+        const double z = 2.8 * k;
+        const int k0 = std::min(static_cast<int>(z), 27);
+        const double f = z - k0;
+        const double expected =
+          (1 - f) * full.At(2 * i, 2 * j, k0) + f * full.At(2 * i, 2 * j, k0 + 1);
+        ExpectRelative(averaged.At(i, j, k), expected, 1e-5, "coarse average");
+      }
+}
