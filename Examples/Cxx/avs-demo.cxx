@@ -1,7 +1,7 @@
 // avs-demo: renders the built-in scene (or a volume file) with emission–absorption, ambient
 // occlusion and ambient scattering, and writes each picture and the three side by side as PNG.
 //
-//   avs-demo [--size N] [--voxels N] [--output DIR] [--reference] [FILE]
+//   avs-demo [--size N] [--voxels N] [--light-grid N] [--output DIR] [--reference] [FILE]
 //
 // The renderers are the GPU mappers (vtkEmissionAbsorptionVolumeMapper,
 // vtkAmbientOcclusionVolumeMapper, vtkAmbientScatteringVolumeMapper) in one window with three
@@ -53,7 +53,8 @@ public:
 void Usage()
 {
   std::printf(
-    "Usage: avs-demo [--size N] [--voxels N] [--output DIR] [--reference] [FILE]\n"
+    "Usage: avs-demo [--size N] [--voxels N] [--light-grid N] [--output DIR] [--reference] "
+    "[FILE]\n"
     "\n"
     "Renders the built-in procedural nebula (or FILE: .vti, .vtk, .slc, .nhdr, .nrrd, .vdb)\n"
     "with emission-absorption, ambient occlusion and ambient scattering using the GPU\n"
@@ -62,12 +63,13 @@ void Usage()
     "\n"
     "  --size N     picture size in pixels, per mapper [256]\n"
     "  --voxels N   voxels per axis of the built-in nebula [128]\n"
+    "  --light-grid N  ambient scattering's LightVolumeMaximumDimension [the mapper's default]\n"
     "  --output DIR output folder [build/demo]\n"
     "  --reference  render with the CPU reference ray caster instead\n");
 }
 
 // The three GPU mappers in one window with three viewports sharing the camera and the lights.
-int RenderWithMappers(DemoScene& scene, int size, const std::string& output)
+int RenderWithMappers(DemoScene& scene, int size, int lightGrid, const std::string& output)
 {
   vtkNew<vtkRenderWindow> window;
   window->SetSize(3 * size, size);
@@ -78,6 +80,10 @@ int RenderWithMappers(DemoScene& scene, int size, const std::string& output)
   vtkNew<vtkAmbientScatteringVolumeMapper> as;
   as->SetAlbedo(0.9);
   as->SetAnisotropy(0.3);
+  if (lightGrid > 0)
+  {
+    as->SetLightVolumeMaximumDimension(lightGrid);
+  }
   vtkAVSVolumeMapper* mappers[3] = { ea, ao, as };
   const char* names[3] = { "ea", "ao", "as" };
   const char* labels[3] = { "emission-absorption", "ambient occlusion", "ambient scattering" };
@@ -154,7 +160,7 @@ int RenderWithMappers(DemoScene& scene, int size, const std::string& output)
 }
 
 // The CPU reference ray caster, one picture per model.
-int RenderWithReference(DemoScene& scene, int size, const std::string& output)
+int RenderWithReference(DemoScene& scene, int size, int lightGrid, const std::string& output)
 {
   struct Mode
   {
@@ -179,6 +185,10 @@ int RenderWithReference(DemoScene& scene, int size, const std::string& output)
     renderer->SetImageSize(size, size);
     renderer->SetAlbedo(0.9);
     renderer->SetAnisotropy(0.3);
+    if (lightGrid > 0)
+    {
+      renderer->SetLightVolumeMaximumDimension(lightGrid);
+    }
     vtkNew<ProgressPrinter> progress;
     progress->Label = mode.Label;
     renderer->AddObserver(vtkCommand::ProgressEvent, progress);
@@ -217,6 +227,7 @@ int main(int argc, char* argv[])
 {
   int size = 256;
   int voxels = 128;
+  int lightGrid = 0;
   std::string output = "build/demo";
   std::string file;
   bool reference = false;
@@ -233,7 +244,8 @@ int main(int argc, char* argv[])
       reference = true;
       continue;
     }
-    if ((arg == "--size" || arg == "--voxels" || arg == "--output") && i + 1 < argc)
+    if ((arg == "--size" || arg == "--voxels" || arg == "--light-grid" || arg == "--output") &&
+      i + 1 < argc)
     {
       const std::string value = argv[++i];
       if (arg == "--output")
@@ -243,12 +255,15 @@ int main(int argc, char* argv[])
       else
       {
         const int v = std::atoi(value.c_str());
-        if (v < 8 || v > 4096)
+        if (v < (arg == "--light-grid" ? 2 : 8) || v > 4096)
         {
-          std::fprintf(stderr, "avs-demo: %s must be between 8 and 4096\n", arg.c_str());
+          std::fprintf(stderr,
+            "avs-demo: %s must be between %d and 4096\n",
+            arg.c_str(),
+            arg == "--light-grid" ? 2 : 8);
           return 2;
         }
-        (arg == "--size" ? size : voxels) = v;
+        (arg == "--size" ? size : (arg == "--voxels" ? voxels : lightGrid)) = v;
       }
       continue;
     }
@@ -276,6 +291,6 @@ int main(int argc, char* argv[])
     }
   }
 
-  return reference ? RenderWithReference(scene, size, output)
-                   : RenderWithMappers(scene, size, output);
+  return reference ? RenderWithReference(scene, size, lightGrid, output)
+                   : RenderWithMappers(scene, size, lightGrid, output);
 }
