@@ -25,7 +25,16 @@ uniform int u_positional;       // 0: directional, 1: positional
 uniform vec3 u_light;           // propagation direction (directional) or position (positional)
 
 float g_tauScale;               // (tau nodes - 1) / log(1 + tau maximum), set in main
+vec3 g_coordinateScale;         // local -> texture coordinate: local * scale + offset
+vec3 g_coordinateOffset;
 
+// The averaged extinction at a local point inside the box.
+float AveragedInside(vec3 local)
+{
+  return textureLod(u_averaged, local * g_coordinateScale + g_coordinateOffset, 0.0).r;
+}
+
+// The same anywhere: 0 outside the box (empty space).
 float Averaged(vec3 local)
 {
   vec3 index = local / u_targetSpacing;
@@ -34,7 +43,7 @@ float Averaged(vec3 local)
   {
     return 0.0;
   }
-  return textureLod(u_averaged, (index + 0.5) / dims, 0.0).r;
+  return AveragedInside(local);
 }
 
 // log F(tau): the factors of a tube are summed as logarithms, one exp at the end.
@@ -115,13 +124,20 @@ void main()
     int n = int(floor(ratio));
     float eta = ratio - float(n);
     g_tauScale = float(u_tauNodes - 1) / log(1.0 + u_tauMaximum);
-    float logT = 0.0, logTn = 0.0;
-    for (int i = 1; i <= n + 1; ++i)
+    vec3 dims = vec3(u_targetDimensions);
+    g_coordinateScale = 1.0 / (u_targetSpacing * dims);
+    g_coordinateOffset = 0.5 / dims;
+    // Ball centres m_i = x0 + (2 i - 1) r d. Those of balls 1..n lie on the segment x0 -> x,
+    // inside the box; only ball n + 1's may lie beyond x, outside.
+    vec3 m = x0 + d * u_radius;
+    vec3 step = d * (2.0 * u_radius);
+    float logTn = 0.0;
+    for (int i = 1; i <= n; ++i)
     {
-      vec3 m = x0 + d * ((2.0 * float(i - 1) + 1.0) * u_radius);
-      logTn = logT;
-      logT += LogForwardTransport(u_radius * Averaged(m));
+      logTn += LogForwardTransport(u_radius * AveragedInside(m));
+      m += step;
     }
+    float logT = logTn + LogForwardTransport(u_radius * Averaged(m));
     T = (1.0 - eta) * exp(logTn) + eta * exp(logT);
   }
   vec4 value = imageLoad(u_target, voxel);
