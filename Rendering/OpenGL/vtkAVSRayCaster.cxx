@@ -584,9 +584,8 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
     glUniform3i(location("u_dimensions"), in[0], in[1], in[2]);
     if (pass == 0)
     {
-      glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8),
-        static_cast<GLuint>((d[1] + 7) / 8),
-        static_cast<GLuint>(d[2]));
+      glDispatchCompute(
+        static_cast<GLuint>((d[0] + 7) / 8), static_cast<GLuint>((d[1] + 7) / 8), 1);
     }
     else
     {
@@ -609,9 +608,7 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
     static_cast<float>(l[2]));
   glUniform1i(location("u_pass"), 4);
   glUniform3i(location("u_dimensions"), d[0], d[1], d[2]);
-  glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8),
-    static_cast<GLuint>((d[1] + 7) / 8),
-    static_cast<GLuint>(d[2]));
+  glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8), static_cast<GLuint>((d[1] + 7) / 8), 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   this->AveragedExtinction->Deactivate();
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
