@@ -67,12 +67,11 @@ public:
 
   ///@{
   /**
-   * Largest light-volume dimension per axis (the data's size, capped, keeping the aspect
-   * ratio). Default 128: the tube transmittance varies on the scale of the ambient radius, and
-   * on the 256^3 benchmark nebula a cap of 128 rendered within 61 dB PSNR of 256 (largest
-   * difference 2/255) while a transfer-function change rebuilt about 3x faster. Light volumes
-   * on the data's own grid (data no larger than the cap) travel with the scalars: lights 0 and 1
-   * then cost no texture fetch of their own.
+   * Largest dimension per axis of the grid of the light volumes and the averaged extinction
+   * (the data's size, capped, keeping the aspect ratio). Default 128: both vary on the scale of
+   * the ambient radius, and on the 256^3 demo nebula a cap of 128 renders within 59 dB PSNR of
+   * 256 (largest difference 5/255) while a transfer-function change rebuilds several times
+   * faster.
    */
   vtkSetClampMacro(LightVolumeMaximumDimension, int, 2, 4096);
   vtkGetMacro(LightVolumeMaximumDimension, int);

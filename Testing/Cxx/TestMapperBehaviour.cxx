@@ -2,10 +2,12 @@
 // (rebuild counters), opaque geometry ends the rays, several windows, resizing, releasing
 // resources, bad input (an error and nothing drawn), and PrintSelf.
 #include "MapperTestScene.h"
+#include "ScatteringTable.h"
 #include "TestErrorObserver.h"
 
 #include "vtkActor.h"
 #include "vtkAmbientOcclusionVolumeMapper.h"
+#include "vtkAmbientScatteringTable.h"
 #include "vtkAmbientScatteringVolumeMapper.h"
 #include "vtkDoubleArray.h"
 #include "vtkEmissionAbsorptionVolumeMapper.h"
@@ -15,6 +17,7 @@
 #include "vtkProperty.h"
 #include "vtkSphereSource.h"
 
+#include <cstdio>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -56,7 +59,7 @@ vtkLight* LightAt(vtkRenderer* renderer, int index)
 }
 } // namespace
 
-int main(int, char*[])
+int main(int argc, char* argv[])
 {
   int failures = 0;
   auto data = MakeTestVolume(32);
@@ -169,6 +172,55 @@ int main(int, char*[])
       b.Volume->SetPosition(0.05, 0.0, 0.02);
     }
     AVS_CHECK(onGPU->GetNumberOfLightVolumeRebuilds() == onCPU->GetNumberOfLightVolumeRebuilds());
+  }
+  // --- A user table whose tau axis is longer than the GPU light-volume pass takes (64 nodes):
+  // the shipped table resampled onto 80 tau nodes. The mapper marches the light volumes on the
+  // CPU and renders what the shipped table gives, up to the resampling.
+  {
+    avs::ScatteringTable shipped;
+    std::string error;
+    AVS_CHECK(shipped.Read(vtkAmbientScatteringTable::GetDefaultFileName(), &error));
+    avs::ScatteringTableAxes axes = shipped.Axes;
+    axes.NumberOfTau = 80;
+    avs::ScatteringTable fine;
+    fine.Allocate(axes);
+    for (int l = 0; l < axes.NumberOfAlbedo; ++l)
+      for (int k = 0; k < axes.NumberOfAnisotropy; ++k)
+        for (int j = 0; j < axes.NumberOfTau; ++j)
+        {
+          const double tau = axes.Tau(j), g = axes.Anisotropy(k), albedo = axes.Albedo(l);
+          fine.F[fine.FIndex(j, k, l)] =
+            static_cast<float>(shipped.ForwardTransport(tau, g, albedo));
+          for (int i = 0; i < axes.NumberOfTheta; ++i)
+          {
+            fine.A[fine.AIndex(i, j, k, l)] =
+              static_cast<float>(shipped.InScattering(axes.Theta(i), tau, g, albedo));
+          }
+        }
+    const std::string file =
+      std::string(argc > 1 ? argv[1] : ".") + "/TestMapperBehaviour_tau80.avst";
+    AVS_CHECK(fine.Write(file, &error));
+    vtkNew<vtkAmbientScatteringVolumeMapper> shippedTable;
+    vtkNew<vtkAmbientScatteringVolumeMapper> longAxis;
+    longAxis->SetScatteringTableFileName(file.c_str());
+    for (vtkAVSVolumeMapper* m : { static_cast<vtkAVSVolumeMapper*>(shippedTable),
+           static_cast<vtkAVSVolumeMapper*>(longAxis) })
+    {
+      m->SetInputData(data);
+      m->UseJitteringOff();
+    }
+    Scene a(shippedTable, 96);
+    Scene b(longAxis, 96);
+    const auto pa = a.Render();
+    const auto pb = b.Render();
+    std::cout << "80 tau nodes: light volumes on the GPU: "
+              << (longAxis->GetLightVolumesOnGPU() ? "yes" : "no")
+              << ", PSNR against the shipped table's " << Psnr(pa, pb) << " dB (" << error << ")\n";
+    AVS_CHECK(longAxis->GetLightVolumesOnGPU() == 0);
+    AVS_CHECK(longAxis->GetNumberOfRenderedFrames() == 1);
+    AVS_CHECK(Brightness(pb) > 1000.0);
+    AVS_CHECK(Psnr(pa, pb) > 40.0);
+    std::remove(file.c_str());
   }
   // The same for the occlusion volume.
   {

@@ -107,7 +107,7 @@ int main(int argc, char* argv[])
       mapper->SetSampleDistance(step);
       mapper->UseJitteringOff();
       as->SetAmbientRadius(radius);
-      // Parallel view: light volumes coarser than the data (not packed into the volume texture).
+      // Parallel view: light volumes and averaged extinction on a grid coarser than the data.
       as->SetLightVolumeMaximumDimension(view == 2 ? 24 : 256);
       ao->SetDirectLightWeight(direct);
       ao->SetEmissionWeight(emission);
