@@ -44,7 +44,12 @@ struct vtkAVSVolumeMapper::Internals
   // Versions of the derived volumes: a change of a version invalidates what uses it.
   int DataVersion = 0;
   int TransferVersion = 0;
-  int ExtinctionKey[2] = { -1, -1 }; // data, transfer versions of Extinction
+  int ExtinctionKey[2] = { -1, -1 }; // data, opacity versions of Extinction
+  // What sigma_t depends on, and its version (a colour change leaves it).
+  int OpacityVersion = 0;
+  std::vector<float> ExtinctionOpacity;
+  double ExtinctionRange[2] = { 0.0, 0.0 };
+  double ExtinctionUnitDistance = -1.0;
   avs::Grid Extinction;
 
   // Ambient scattering.
@@ -195,6 +200,17 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     in.PropertyTime = property->GetMTime();
     in.TransferUploaded = false;
     ++in.TransferVersion;
+    // Extinction depends on the opacity alone: a change of colour only rebuilds nothing.
+    if (in.Transfer.Opacity != in.ExtinctionOpacity ||
+      in.Transfer.Minimum != in.ExtinctionRange[0] ||
+      in.Transfer.Maximum != in.ExtinctionRange[1] || in.UnitDistance != in.ExtinctionUnitDistance)
+    {
+      in.ExtinctionOpacity = in.Transfer.Opacity;
+      in.ExtinctionRange[0] = in.Transfer.Minimum;
+      in.ExtinctionRange[1] = in.Transfer.Maximum;
+      in.ExtinctionUnitDistance = in.UnitDistance;
+      ++in.OpacityVersion;
+    }
   }
 
   // Parameters: base values, then the subclass's.
@@ -272,7 +288,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     in.RayCaster.SupportsComputeShaders() &&
     table->Axes.NumberOfTau <= vtkAVSRayCaster::MaximumTauNodes;
   if (!gpuScattering &&
-    (in.ExtinctionKey[0] != in.DataVersion || in.ExtinctionKey[1] != in.TransferVersion))
+    (in.ExtinctionKey[0] != in.DataVersion || in.ExtinctionKey[1] != in.OpacityVersion))
   {
     scene.Transfer = in.Transfer;
     scene.UnitDistance = in.UnitDistance;
@@ -280,7 +296,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     scene.Scalars.Values = in.Scalars.Values;
     in.Extinction = avs::ExtinctionGrid(scene);
     in.ExtinctionKey[0] = in.DataVersion;
-    in.ExtinctionKey[1] = in.TransferVersion;
+    in.ExtinctionKey[1] = in.OpacityVersion;
   }
 
   if (effect == 1)
@@ -345,7 +361,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   // The averaged extinction and the light volumes share the light grid.
   const avs::GridGeometry lightGrid =
     g.Resampled(avs::LightVolumeDimensions(g.Dimensions, rp.LightVolumeMaximumDimension));
-  if (in.AveragedKey[0] != in.DataVersion || in.AveragedKey[1] != in.TransferVersion ||
+  if (in.AveragedKey[0] != in.DataVersion || in.AveragedKey[1] != in.OpacityVersion ||
     in.AveragedRadius != rp.AmbientRadius || in.AveragedOnGPU != (gpuScattering ? 1 : 0) ||
     in.AveragedDimensions != lightGrid.Dimensions)
   {
@@ -368,7 +384,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
       in.AveragedAtVoxels = avs::ResampleTrilinear(in.Averaged, g);
     }
     in.AveragedKey[0] = in.DataVersion;
-    in.AveragedKey[1] = in.TransferVersion;
+    in.AveragedKey[1] = in.OpacityVersion;
     in.AveragedOnGPU = gpuScattering ? 1 : 0;
     in.AveragedRadius = rp.AmbientRadius;
     in.AveragedDimensions = lightGrid.Dimensions;

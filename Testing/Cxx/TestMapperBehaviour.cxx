@@ -9,6 +9,7 @@
 #include "vtkAmbientOcclusionVolumeMapper.h"
 #include "vtkAmbientScatteringTable.h"
 #include "vtkAmbientScatteringVolumeMapper.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkDoubleArray.h"
 #include "vtkEmissionAbsorptionVolumeMapper.h"
 #include "vtkFloatArray.h"
@@ -101,6 +102,13 @@ int main(int argc, char* argv[])
     AVS_CHECK(mapper->GetNumberOfExtinctionRebuilds() == 2);
     AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 7);
     AVS_CHECK(mapper->GetNumberOfDataUploads() == 1);
+    // A change of colour alone changes the picture but no extinction: nothing is rebuilt.
+    const auto before = scene.Render();
+    scene.Volume->GetProperty()->GetRGBTransferFunction()->AddRGBPoint(500, 0.1, 0.9, 0.2);
+    const auto after = scene.Render();
+    AVS_CHECK(Psnr(before, after) < 40.0);
+    AVS_CHECK(mapper->GetNumberOfExtinctionRebuilds() == 2);
+    AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 7);
     // The radius: both. g and the albedo: the light volumes (F changes), not the average.
     mapper->SetAmbientRadius(0.1);
     scene.Render();
