@@ -402,8 +402,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   in.LightGridDimensions = lightGrid.Dimensions;
   this->LightVolumesOnGPU = gpu;
   const std::size_t n = in.WorldLights.size();
-  bool changed = in.Lights.size() != n || !in.LightVolumesUploaded ||
-    in.UploadedAveragedVersion != in.AveragedVersion;
+  bool changed = in.Lights.size() != n || !in.LightVolumesUploaded;
   in.Lights.resize(n);
   for (std::size_t j = 0; j < n; ++j)
   {
@@ -444,6 +443,12 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
       ++this->NumberOfLightVolumeRebuilds;
     }
   }
+  if (!gpu && in.UploadedAveragedVersion != in.AveragedVersion &&
+    !in.RayCaster.UploadScalarsAveraged(in.Scalars, in.AveragedAtVoxels, error))
+  {
+    vtkErrorMacro("Cannot render: " << error);
+    return false;
+  }
   if (!gpu && changed)
   {
     std::vector<avs::Grid> volumes;
@@ -451,7 +456,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     {
       volumes.push_back(state.Volume);
     }
-    if (!in.RayCaster.UploadScatteringVolumes(in.Scalars, in.AveragedAtVoxels, volumes, error))
+    if (!in.RayCaster.UploadLightVolumes(volumes, error))
     {
       vtkErrorMacro("Cannot render: " << error);
       return false;

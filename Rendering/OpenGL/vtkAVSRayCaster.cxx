@@ -302,9 +302,8 @@ bool vtkAVSRayCaster::EnsureLightTextures(const std::array<int, 3>& dimensions,
   return true;
 }
 
-bool vtkAVSRayCaster::UploadScatteringVolumes(const avs::Grid& scalars,
+bool vtkAVSRayCaster::UploadScalarsAveraged(const avs::Grid& scalars,
   const avs::Grid& averagedAtVoxels,
-  const std::vector<avs::Grid>& lights,
   std::string& error)
 {
   const std::size_t voxels = scalars.Values.size();
@@ -319,11 +318,12 @@ bool vtkAVSRayCaster::UploadScatteringVolumes(const avs::Grid& scalars,
     packed[2 * i] = scalars.Values[i];
     packed[2 * i + 1] = averagedAtVoxels.Values[i];
   }
-  if (!this->UploadScalarGrid(
-        this->ScalarsAveraged, scalars.Geometry.Dimensions, 2, packed.data(), error))
-  {
-    return false;
-  }
+  return this->UploadScalarGrid(
+    this->ScalarsAveraged, scalars.Geometry.Dimensions, 2, packed.data(), error);
+}
+
+bool vtkAVSRayCaster::UploadLightVolumes(const std::vector<avs::Grid>& lights, std::string& error)
+{
   if (lights.empty())
   {
     return true;
@@ -351,7 +351,7 @@ bool vtkAVSRayCaster::UploadScatteringVolumes(const avs::Grid& scalars,
       }
       continue;
     }
-    packed.assign(4 * n, 1.0f);
+    std::vector<float> packed(4 * n, 1.0f);
     for (int c = 0; c < 4; ++c)
     {
       const std::size_t j = static_cast<std::size_t>(4 * t + c);

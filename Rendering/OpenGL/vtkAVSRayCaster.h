@@ -64,11 +64,12 @@ public:
   bool UploadTransferFunction(const avs::TransferFunction& tf, std::string& error);
   /// The CPU's ambient-scattering volumes as the ray caster fetches them: the scalars beside
   /// the averaged extinction interpolated at the voxels (both on the data's grid, one
-  /// two-channel texture), and up to 8 light volumes on the light grid, four to an RGBA texture.
-  bool UploadScatteringVolumes(const avs::Grid& scalars,
+  /// two-channel texture) ...
+  bool UploadScalarsAveraged(const avs::Grid& scalars,
     const avs::Grid& averagedAtVoxels,
-    const std::vector<avs::Grid>& lights,
     std::string& error);
+  /// ... and up to 8 light volumes on one (the light) grid, four to an RGBA texture.
+  bool UploadLightVolumes(const std::vector<avs::Grid>& lights, std::string& error);
 
   /// Ambient occlusion computed on the GPU from the extinction grid into the occlusion texture
   /// (at most 256 directions). Returns false when the context cannot, with the reason.
