@@ -81,6 +81,7 @@ struct vtkAVSVolumeMapper::Internals
   std::array<int, 3> LightGridDimensions{ 2, 2, 2 };
 
   // Ambient occlusion.
+  std::array<int, 3> OcclusionDimensions{ 0, 0, 0 };
   int OcclusionKey[2] = { -1, -1 };
   double OcclusionRadius = -1.0;
   int OcclusionDirections = -1;
@@ -301,17 +302,23 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
 
   if (effect == 1)
   {
+    // The occlusion volume's grid: the data's, capped like the light volumes'.
+    const avs::GridGeometry occlusionGrid =
+      g.Resampled(avs::LightVolumeDimensions(g.Dimensions, rp.OcclusionVolumeMaximumDimension));
     if (in.OcclusionKey[0] != in.ExtinctionKey[0] || in.OcclusionKey[1] != in.ExtinctionKey[1] ||
       in.OcclusionRadius != rp.OcclusionRadius || in.OcclusionDirections != rp.NumberOfDirections ||
-      !in.OcclusionUploaded)
+      in.OcclusionDimensions != occlusionGrid.Dimensions || !in.OcclusionUploaded)
     {
       this->UpdateProgress(0.0);
       const bool gpu = this->PrecomputeOnGPU && in.RayCaster.SupportsComputeShaders() &&
         rp.NumberOfDirections <= 256;
       if (gpu)
       {
-        if (!in.RayCaster.ComputeOcclusion(
-              in.Extinction, rp.OcclusionRadius, rp.NumberOfDirections, error))
+        if (!in.RayCaster.ComputeOcclusion(in.Extinction,
+              occlusionGrid.Dimensions,
+              rp.OcclusionRadius,
+              rp.NumberOfDirections,
+              error))
         {
           vtkErrorMacro("Cannot render: " << error);
           return false;
@@ -320,7 +327,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
       else
       {
         const avs::Grid ao = avs::ComputeAmbientOcclusion(in.Extinction,
-          g,
+          occlusionGrid,
           rp.OcclusionRadius,
           rp.NumberOfDirections,
           0.0,
@@ -338,6 +345,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
       in.OcclusionKey[1] = in.ExtinctionKey[1];
       in.OcclusionRadius = rp.OcclusionRadius;
       in.OcclusionDirections = rp.NumberOfDirections;
+      in.OcclusionDimensions = occlusionGrid.Dimensions;
       in.OcclusionUploaded = true;
       ++this->NumberOfOcclusionRebuilds;
     }
@@ -499,6 +507,7 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.WorldToIndex = in.WorldToIndex;
   frame.Dimensions = in.Scalars.Geometry.Dimensions;
   frame.LightVolumeDimensions = in.LightGridDimensions;
+  frame.OcclusionDimensions = in.OcclusionDimensions;
   frame.UnitDistance = in.UnitDistance;
   frame.Lights = in.WorldLights;
   frame.Jitter = this->UseJittering != 0;

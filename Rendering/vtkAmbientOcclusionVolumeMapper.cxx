@@ -10,6 +10,7 @@ void vtkAmbientOcclusionVolumeMapper::FillParameters(avs::ScatteringParameters& 
 {
   p.OcclusionRadius = this->OcclusionRadius;
   p.NumberOfDirections = this->NumberOfDirections;
+  p.OcclusionVolumeMaximumDimension = this->OcclusionVolumeMaximumDimension;
   p.AmbientWeight = this->AmbientWeight;
   p.EmissionWeight = this->EmissionWeight;
   p.DirectLightWeight = this->DirectLightWeight;
@@ -24,6 +25,8 @@ void vtkAmbientOcclusionVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OcclusionRadius: " << this->OcclusionRadius
      << (this->OcclusionRadius > 0 ? "" : " (automatic)") << "\n";
   os << indent << "NumberOfDirections: " << this->NumberOfDirections << "\n";
+  os << indent << "OcclusionVolumeMaximumDimension: " << this->OcclusionVolumeMaximumDimension
+     << "\n";
   os << indent << "AmbientWeight: " << this->AmbientWeight << "\n";
   os << indent << "EmissionWeight: " << this->EmissionWeight << "\n";
   os << indent << "DirectLightWeight: " << this->DirectLightWeight << "\n";

@@ -40,6 +40,16 @@ public:
 
   ///@{
   /**
+   * Largest dimension per axis of the occlusion volume (the data's size, capped, keeping the
+   * aspect ratio). Default 128: the occlusion varies on the scale of R, and its cost is K times
+   * R's steps per grid point (on a 256^3 volume a cap of 128 computes it 8 times faster).
+   */
+  vtkSetClampMacro(OcclusionVolumeMaximumDimension, int, 2, 4096);
+  vtkGetMacro(OcclusionVolumeMaximumDimension, int);
+  ///@}
+
+  ///@{
+  /**
    * Weight k_amb of the occlusion term. Default 1.
    */
   vtkSetClampMacro(AmbientWeight, double, 0.0, VTK_DOUBLE_MAX);
@@ -70,6 +80,7 @@ protected:
 
   double OcclusionRadius = 0.0;
   int NumberOfDirections = 32;
+  int OcclusionVolumeMaximumDimension = 128;
   double AmbientWeight = 1.0;
   double EmissionWeight = 0.0;
   double DirectLightWeight = 0.0;

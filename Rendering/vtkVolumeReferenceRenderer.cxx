@@ -199,6 +199,7 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
   parameters.SampleDistance = this->SampleDistance;
   parameters.TerminationTransmittance = this->TerminationTransmittance;
   parameters.LightVolumeMaximumDimension = this->LightVolumeMaximumDimension;
+  parameters.OcclusionVolumeMaximumDimension = this->OcclusionVolumeMaximumDimension;
   const avs::ScatteringParameters resolved = parameters.Resolve(scene.Scalars.Geometry);
 
   const int w = std::max(1, this->ImageSize[0]);
@@ -311,6 +312,8 @@ void vtkVolumeReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
      << (this->SampleDistance > 0 ? "" : " (automatic)") << "\n";
   os << indent << "TerminationTransmittance: " << this->TerminationTransmittance << "\n";
   os << indent << "LightVolumeMaximumDimension: " << this->LightVolumeMaximumDimension << "\n";
+  os << indent << "OcclusionVolumeMaximumDimension: " << this->OcclusionVolumeMaximumDimension
+     << "\n";
   os << indent << "SamplesPerPixel: " << this->SamplesPerPixel << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
 }

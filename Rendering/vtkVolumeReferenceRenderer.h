@@ -208,6 +208,14 @@ public:
 
   ///@{
   /**
+   * Largest occlusion-volume dimension per axis (the data's dimensions, capped). Default 128.
+   */
+  vtkSetClampMacro(OcclusionVolumeMaximumDimension, int, 2, 4096);
+  vtkGetMacro(OcclusionVolumeMaximumDimension, int);
+  ///@}
+
+  ///@{
+  /**
    * Path tracing: samples per pixel (default 64) and the random seed (default 1; the same seed
    * gives the same picture).
    */
@@ -249,6 +257,7 @@ protected:
   double SampleDistance = 0.0;
   double TerminationTransmittance = 1.0 / 255.0;
   int LightVolumeMaximumDimension = 128;
+  int OcclusionVolumeMaximumDimension = 128;
   int SamplesPerPixel = 64;
   int Seed = 1;
 

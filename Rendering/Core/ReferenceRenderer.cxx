@@ -81,7 +81,8 @@ bool Precompute(const VolumeScene& scene,
   if (mode == RenderMode::AmbientOcclusion)
   {
     out.Occlusion = ComputeAmbientOcclusion(out.Extinction,
-      geometry,
+      geometry.Resampled(
+        LightVolumeDimensions(geometry.Dimensions, p.OcclusionVolumeMaximumDimension)),
       p.OcclusionRadius,
       p.NumberOfDirections,
       0.0,

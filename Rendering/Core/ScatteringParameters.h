@@ -36,7 +36,8 @@ struct ScatteringParameters
   // Ray casting.
   double SampleDistance = 0.0; ///< world units; 0: automatic (half the smallest spacing)
   double TerminationTransmittance = 1.0 / 255.0; ///< stop a ray when T falls below
-  int LightVolumeMaximumDimension = 128; ///< light volumes use the data's size, capped by this
+  int LightVolumeMaximumDimension = 128;     ///< light volumes use the data's size, capped by this
+  int OcclusionVolumeMaximumDimension = 128; ///< the AO volume likewise
 
   /// The automatic ambient radius of a grid: 1/64 of the box diagonal, but at least one voxel.
   static double DefaultAmbientRadius(const GridGeometry& g)
@@ -74,6 +75,7 @@ struct ScatteringParameters
     }
     p.TerminationTransmittance = std::clamp(p.TerminationTransmittance, 0.0, 1.0);
     p.LightVolumeMaximumDimension = std::max(2, p.LightVolumeMaximumDimension);
+    p.OcclusionVolumeMaximumDimension = std::max(2, p.OcclusionVolumeMaximumDimension);
     return p;
   }
 };

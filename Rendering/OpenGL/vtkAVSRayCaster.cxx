@@ -626,6 +626,7 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
 }
 
 bool vtkAVSRayCaster::ComputeOcclusion(const avs::Grid& extinction,
+  const std::array<int, 3>& dimensions,
   double radius,
   int directions,
   std::string& error)
@@ -642,9 +643,7 @@ bool vtkAVSRayCaster::ComputeOcclusion(const avs::Grid& extinction,
   {
     return false;
   }
-  std::vector<float> zeros(g.NumberOfPoints(), 0.0f);
-  if (!this->UploadScalarGrid(
-        this->Occlusion, extinction.Geometry.Dimensions, 1, zeros.data(), error))
+  if (!this->UploadScalarGrid(this->Occlusion, dimensions, 1, nullptr, error))
   {
     sigma->ReleaseGraphicsResources(this->Window);
     return false;
@@ -670,13 +669,14 @@ bool vtkAVSRayCaster::ComputeOcclusion(const avs::Grid& extinction,
   glUniform1i(location("u_extinction"), sigma->GetTextureUnit());
   const auto& d = g.Dimensions;
   glUniform3i(location("u_dimensions"), d[0], d[1], d[2]);
+  glUniform3i(location("u_targetDimensions"), dimensions[0], dimensions[1], dimensions[2]);
   glUniform1i(location("u_directions"), directions);
   glUniform1i(location("u_steps"), n);
   glUniform1f(location("u_step"), static_cast<float>(h));
   glUniform3fv(location("u_offsets"), directions, offsets.data());
-  glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8),
-    static_cast<GLuint>((d[1] + 7) / 8),
-    static_cast<GLuint>(d[2]));
+  glDispatchCompute(static_cast<GLuint>((dimensions[0] + 7) / 8),
+    static_cast<GLuint>((dimensions[1] + 7) / 8),
+    static_cast<GLuint>(dimensions[2]));
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
   glUseProgram(0);
@@ -949,6 +949,16 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     }
     this->Occlusion->Activate();
     program->SetUniformi("u_occlusion", this->Occlusion->GetTextureUnit());
+    // Data index -> occlusion texture coordinate: index * scale + offset.
+    float scale[3], offset[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double l = frame.OcclusionDimensions[a], n = frame.Dimensions[a];
+      scale[a] = static_cast<float>(n > 1 ? (l - 1) / ((n - 1) * l) : 0.0);
+      offset[a] = static_cast<float>(0.5 / l);
+    }
+    program->SetUniform3f("u_occlusionScale", scale);
+    program->SetUniform3f("u_occlusionOffset", offset);
     program->SetUniformf("u_ambientWeight", static_cast<float>(p.AmbientWeight));
     program->SetUniformf("u_directLightWeight", static_cast<float>(p.DirectLightWeight));
   }

@@ -71,9 +71,11 @@ public:
   /// ... and up to 8 light volumes on one (the light) grid, four to an RGBA texture.
   bool UploadLightVolumes(const std::vector<avs::Grid>& lights, std::string& error);
 
-  /// Ambient occlusion computed on the GPU from the extinction grid into the occlusion texture
-  /// (at most 256 directions). Returns false when the context cannot, with the reason.
+  /// Ambient occlusion computed on the GPU from the extinction grid into the occlusion texture,
+  /// on the grid `dimensions` over the same box (at most 256 directions). Returns false when the
+  /// context cannot, with the reason.
   bool ComputeOcclusion(const avs::Grid& extinction,
+    const std::array<int, 3>& dimensions,
     double radius,
     int directions,
     std::string& error);
@@ -110,6 +112,7 @@ public:
     vtkMatrix4x4* WorldToIndex = nullptr; ///< row-major, VTK convention
     std::array<int, 3> Dimensions{ 1, 1, 1 };
     std::array<int, 3> LightVolumeDimensions{ 1, 1, 1 };
+    std::array<int, 3> OcclusionDimensions{ 1, 1, 1 };
     double UnitDistance = 1.0;
     std::vector<avs::Light> Lights; ///< world space
     bool Jitter = true;

@@ -2,7 +2,9 @@
 // Volumetric ambient occlusion (ALGORITHM.md section 7): EA with the colour scaled by
 // k_amb AO(x) + k_e, plus optional unshadowed direct light (compiled in, as AVS_DIRECT_LIGHT,
 // only when its weight is above 0).
-uniform sampler3D u_occlusion;
+uniform sampler3D u_occlusion;      // on its own grid over the same box
+uniform vec3 u_occlusionScale;      // data index -> its texture coordinate: index * scale + offset
+uniform vec3 u_occlusionOffset;
 uniform float u_ambientWeight;
 uniform float u_emissionWeight;
 uniform float u_directLightWeight;
@@ -21,7 +23,7 @@ vec3 DirectLight(int j, vec3 world, vec3 direction)
 #endif
 //AVS::Effect::Sample
     {
-      float ao = texture(u_occlusion, (index + 0.5) / u_dimensions).r;
+      float ao = texture(u_occlusion, index * u_occlusionScale + u_occlusionOffset).r;
       float weight = u_ambientWeight * ao + u_emissionWeight;
       vec3 c = here.rgb * weight;
 #ifdef AVS_DIRECT_LIGHT

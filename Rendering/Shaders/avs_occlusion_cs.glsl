@@ -6,7 +6,8 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(r32f, binding = 0) uniform image3D u_target;
 uniform sampler3D u_extinction; // sigma_t on the data grid (texel centres = voxels)
-uniform ivec3 u_dimensions;
+uniform ivec3 u_dimensions;       // of the data grid
+uniform ivec3 u_targetDimensions; // of the occlusion grid (same box, at most as fine)
 uniform int u_directions;
 uniform int u_steps;
 uniform float u_step;              // R / n, world units
@@ -15,12 +16,13 @@ uniform vec3 u_offsets[256];       // per direction: the index offset of one ste
 void main()
 {
   ivec3 voxel = ivec3(gl_GlobalInvocationID);
-  if (any(greaterThanEqual(voxel, u_dimensions)))
+  if (any(greaterThanEqual(voxel, u_targetDimensions)))
   {
     return;
   }
   vec3 n = vec3(u_dimensions);
-  vec3 base = vec3(voxel);
+  // The grid point's continuous index on the data grid.
+  vec3 base = vec3(voxel) * (n - 1.0) / max(vec3(u_targetDimensions) - 1.0, vec3(1.0));
   float sum = 0.0;
   for (int k = 0; k < u_directions; ++k)
   {

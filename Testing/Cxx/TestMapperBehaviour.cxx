@@ -267,10 +267,22 @@ int main(int argc, char* argv[])
     scene.Volume->GetProperty()->GetScalarOpacity()->AddPoint(450, 0.2);
     scene.Render();
     AVS_CHECK(mapper->GetNumberOfOcclusionRebuilds() == 3);
+    // A coarser occlusion grid (the test volume is 32^3) rebuilds; a cap above the data's size
+    // changes nothing.
+    mapper->SetOcclusionVolumeMaximumDimension(16);
+    scene.Render();
+    AVS_CHECK(mapper->GetNumberOfOcclusionRebuilds() == 4);
+    mapper->SetOcclusionVolumeMaximumDimension(64);
+    scene.Render();
+    AVS_CHECK(mapper->GetNumberOfOcclusionRebuilds() == 5);
+    mapper->SetOcclusionVolumeMaximumDimension(100);
+    scene.Render();
+    AVS_CHECK(mapper->GetNumberOfOcclusionRebuilds() == 5);
     std::ostringstream os;
     mapper->Print(os);
     for (const char* key : { "OcclusionRadius",
            "NumberOfDirections",
+           "OcclusionVolumeMaximumDimension",
            "AmbientWeight",
            "EmissionWeight",
            "DirectLightWeight" })

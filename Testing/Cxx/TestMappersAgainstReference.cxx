@@ -107,8 +107,10 @@ int main(int argc, char* argv[])
       mapper->SetSampleDistance(step);
       mapper->UseJitteringOff();
       as->SetAmbientRadius(radius);
-      // Parallel view: light volumes and averaged extinction on a grid coarser than the data.
+      // Parallel view: light volumes, averaged extinction and occlusion on grids coarser than
+      // the data.
       as->SetLightVolumeMaximumDimension(view == 2 ? 24 : 256);
+      ao->SetOcclusionVolumeMaximumDimension(view == 2 ? 20 : 256);
       ao->SetDirectLightWeight(direct);
       ao->SetEmissionWeight(emission);
       as->SetEmissionWeight(emission);
@@ -137,6 +139,7 @@ int main(int argc, char* argv[])
       reference->SetOcclusionRadius(0.15);
       reference->SetAmbientRadius(radius);
       reference->SetLightVolumeMaximumDimension(view == 2 ? 24 : 256);
+      reference->SetOcclusionVolumeMaximumDimension(view == 2 ? 20 : 256);
       // The AO mapper's direct light scatters with albedo 1 and g = 0.
       reference->SetAnisotropy(m == 1 ? 0.0 : 0.4);
       reference->SetAlbedo(m == 1 ? 1.0 : 0.9);

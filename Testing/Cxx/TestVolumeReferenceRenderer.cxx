@@ -204,6 +204,7 @@ int main(int, char*[])
          "SampleDistance",
          "TerminationTransmittance",
          "LightVolumeMaximumDimension",
+         "OcclusionVolumeMaximumDimension",
          "ImageSize",
          "Background" })
   {
