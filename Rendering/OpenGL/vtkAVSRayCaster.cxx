@@ -186,11 +186,35 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
       *program = 0;
     }
     this->ComputeSupport = -1; // asked again in the next context
+    this->SoftwareRenderer = -1;
   }
   if (window == this->Window)
   {
     this->Window = nullptr;
   }
+}
+
+unsigned int vtkAVSRayCaster::LightVolumeFormat() const
+{
+  // Transmittances in [0, 1] keep 11 significant bits as half floats, and a 64-bit texel filters
+  // at twice the rate of a 128-bit one on GPUs (measured on an H100: ambient scattering with 4
+  // lights 1.96 instead of 2.53 EA frames). A software rasterizer converts each half-float texel
+  // instead, so there 32-bit floats are faster.
+  return this->IsSoftwareRenderer() ? GL_RGBA32F : GL_RGBA16F;
+}
+
+bool vtkAVSRayCaster::IsSoftwareRenderer() const
+{
+  if (this->SoftwareRenderer < 0)
+  {
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const std::string name = renderer ? renderer : "";
+    this->SoftwareRenderer = name.find("llvmpipe") != std::string::npos ||
+        name.find("softpipe") != std::string::npos || name.find("SwiftShader") != std::string::npos
+      ? 1
+      : 0;
+  }
+  return this->SoftwareRenderer == 1;
 }
 
 int vtkAVSRayCaster::MaximumTextureSize3D() const
@@ -208,7 +232,8 @@ bool vtkAVSRayCaster::UploadScalarGrid(vtkSmartPointer<vtkTextureObject>& textur
   const std::array<int, 3>& d,
   int components,
   const float* data,
-  std::string& error)
+  std::string& error,
+  unsigned int internalFormat)
 {
   const int limit = this->MaximumTextureSize3D();
   if (d[0] > limit || d[1] > limit || d[2] > limit)
@@ -218,7 +243,8 @@ bool vtkAVSRayCaster::UploadScalarGrid(vtkSmartPointer<vtkTextureObject>& textur
       ") is too large for the GPU (largest 3D texture: " + std::to_string(limit) + " per axis)";
     return false;
   }
-  if (texture && !data && texture->GetWidth() == static_cast<unsigned int>(d[0]) &&
+  if (texture && !data && !internalFormat &&
+    texture->GetWidth() == static_cast<unsigned int>(d[0]) &&
     texture->GetHeight() == static_cast<unsigned int>(d[1]) &&
     texture->GetDepth() == static_cast<unsigned int>(d[2]) &&
     texture->GetComponents() == components)
@@ -232,6 +258,10 @@ bool vtkAVSRayCaster::UploadScalarGrid(vtkSmartPointer<vtkTextureObject>& textur
   texture = vtkSmartPointer<vtkTextureObject>::New();
   texture->SetContext(this->Window);
   ConfigureSampling(texture);
+  if (internalFormat)
+  {
+    texture->SetInternalFormat(internalFormat);
+  }
   // Rows of floats are not padded.
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   if (!texture->Create3DFromRaw(static_cast<unsigned int>(d[0]),
@@ -292,7 +322,8 @@ bool vtkAVSRayCaster::EnsureLightTextures(const std::array<int, 3>& dimensions,
     {
       ones.resize(
         4 * static_cast<std::size_t>(dimensions[0]) * dimensions[1] * dimensions[2], 1.0f);
-      if (!this->UploadScalarGrid(this->LightVolumes[t], dimensions, 4, ones.data(), error))
+      if (!this->UploadScalarGrid(
+            this->LightVolumes[t], dimensions, 4, ones.data(), error, this->LightVolumeFormat()))
       {
         this->LightTextureDimensions = { 0, 0, 0 };
         return false;
@@ -363,8 +394,12 @@ bool vtkAVSRayCaster::UploadLightVolumes(const std::vector<avs::Grid>& lights, s
         }
       }
     }
-    if (!this->UploadScalarGrid(
-          this->LightVolumes[t], first.Geometry.Dimensions, 4, packed.data(), error))
+    if (!this->UploadScalarGrid(this->LightVolumes[t],
+          first.Geometry.Dimensions,
+          4,
+          packed.data(),
+          error,
+          this->LightVolumeFormat()))
     {
       return false;
     }
@@ -391,6 +426,10 @@ bool vtkAVSRayCaster::UploadTransferFunction(const avs::TransferFunction& tf, st
   this->Transfer = vtkSmartPointer<vtkTextureObject>::New();
   this->Transfer->SetContext(this->Window);
   ConfigureSampling(this->Transfer);
+  // Half floats: a 128-bit texel filters at a quarter of the rate of a 64-bit one on NVIDIA
+  // GPUs, and this texture is read at every sample (measured on an H100: EA 1.35x VTK's frame
+  // time with RGBA32F, 0.72x with RGBA16F).
+  this->Transfer->SetInternalFormat(GL_RGBA16F);
   if (!this->Transfer->Create1DFromRaw(static_cast<unsigned int>(n), 4, VTK_FLOAT, rgba.data()))
   {
     error = "the GPU could not allocate the transfer-function texture";
@@ -484,8 +523,9 @@ bool vtkAVSRayCaster::SupportsComputeShaders()
   // The light-volume pass keeps the table's log gain in an array of this many entries.
   std::string lightVolume = avs_lightvolume_cs;
   const std::size_t line = lightVolume.find('\n') + 1; // after #version
-  lightVolume.insert(
-    line, "#define AVS_MAXIMUM_TAU_NODES " + std::to_string(MaximumTauNodes) + "\n");
+  lightVolume.insert(line,
+    "#define AVS_MAXIMUM_TAU_NODES " + std::to_string(MaximumTauNodes) + "\n" +
+      "#define AVS_LIGHT_FORMAT " + (this->IsSoftwareRenderer() ? "rgba32f" : "rgba16f") + "\n");
   this->ComputeProgram = this->BuildComputeProgram(lightVolume.c_str(), "light-volume");
   this->OcclusionProgram = this->BuildComputeProgram(avs_occlusion_cs, "ambient-occlusion");
   this->AverageProgram = this->BuildComputeProgram(avs_average_cs, "averaged-extinction");
@@ -719,8 +759,13 @@ bool vtkAVSRayCaster::ComputeLightVolume(int index,
   this->Window->GetShaderCache()->ReleaseCurrentShader();
   glUseProgram(program);
   auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
-  glBindImageTexture(
-    0, this->LightVolumes[texture]->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glBindImageTexture(0,
+    this->LightVolumes[texture]->GetHandle(),
+    0,
+    GL_TRUE,
+    0,
+    GL_READ_WRITE,
+    this->LightVolumeFormat());
   glUniform1i(location("u_channel"), index % 4);
   glUniform3i(location("u_targetDimensions"), d[0], d[1], d[2]);
   glUniform3f(location("u_targetSpacing"),
@@ -750,7 +795,7 @@ bool vtkAVSRayCaster::ComputeLightVolume(int index,
     static_cast<GLuint>((d[1] + 7) / 8),
     static_cast<GLuint>(d[2]));
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, this->LightVolumeFormat());
   glUseProgram(0);
   this->AveragedExtinction->Deactivate();
   if (const GLenum status = glGetError())

@@ -123,13 +123,21 @@ public:
   bool Render(vtkRenderer* renderer, const Frame& frame, std::string& error);
 
 private:
-  /// A 3D float texture of `components` channels (data may be null: allocated, undefined).
+  /// A 3D float texture of `components` channels (data may be null: allocated, undefined), in
+  /// the GL internal format `internalFormat` (0: 32-bit floats).
   bool UploadScalarGrid(vtkSmartPointer<vtkTextureObject>& texture,
     const std::array<int, 3>& dimensions,
     int components,
     const float* data,
-    std::string& error);
+    std::string& error,
+    unsigned int internalFormat = 0);
   bool EnsureProgram(avs::RenderMode mode, const std::string& defines);
+  /// The light volumes' GL internal format: half floats on a GPU, floats on a software
+  /// rasterizer.
+  unsigned int LightVolumeFormat() const;
+  /// Whether the context's renderer runs on the CPU (llvmpipe and the like), asked once per
+  /// context.
+  bool IsSoftwareRenderer() const;
   /// The first `count` packed light-volume textures on the light grid `dimensions`, allocated
   /// (filled with ones) where missing or of another size.
   bool EnsureLightTextures(const std::array<int, 3>& dimensions, int count, std::string& error);
@@ -158,7 +166,8 @@ private:
   unsigned int ComputeProgram = 0;   ///< GL name of the light-volume compute program
   unsigned int OcclusionProgram = 0; ///< GL name of the ambient-occlusion compute program
   unsigned int AverageProgram = 0;   ///< GL name of the averaged-extinction compute program
-  int ComputeSupport = -1;           ///< -1 unknown, 0 no, 1 yes
+  int ComputeSupport = -1;
+  mutable int SoftwareRenderer = -1; ///< -1 unknown, 0 no, 1 yes (IsSoftwareRenderer)
   std::array<int, 3> LightTextureDimensions{ 0, 0, 0 };
   bool DepthWarningGiven = false;
   float TransferSize = 1.0f;

@@ -23,7 +23,7 @@ vec3 DirectLight(int j, vec3 world, vec3 direction)
 #endif
 //AVS::Effect::Sample
     {
-      float ao = texture(u_occlusion, index * u_occlusionScale + u_occlusionOffset).r;
+      float ao = textureLod(u_occlusion, index * u_occlusionScale + u_occlusionOffset, 0.0).r;
       float weight = u_ambientWeight * ao + u_emissionWeight;
       vec3 c = here.rgb * weight;
 #ifdef AVS_DIRECT_LIGHT

@@ -60,7 +60,7 @@ float ThetaCoordinate(float cosTheta)
 // ThetaCoordinate and TableTauCoordinate).
 float InScattering(float u, float v)
 {
-  return texture(u_table, vec2(u, v) * g_tableScale + g_tableOffset).r;
+  return textureLod(u_table, vec2(u, v) * g_tableScale + g_tableOffset, 0.0).r;
 }
 
 #ifdef AVS_TABLE_COLUMN
@@ -125,12 +125,12 @@ vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified, float 
   // The tube transmittances of all lights at x', four to a texture fetch.
   vec3 lc = index * g_lightScale + g_lightOffset;
 #if AVS_LIGHT_TEXTURES > 0
-  vec4 tubes0 = texture(u_lightVolumes0, lc);
+  vec4 tubes0 = textureLod(u_lightVolumes0, lc, 0.0);
 #else
   vec4 tubes0 = vec4(1.0);
 #endif
 #if AVS_LIGHT_TEXTURES > 1
-  vec4 tubes1 = texture(u_lightVolumes1, lc);
+  vec4 tubes1 = textureLod(u_lightVolumes1, lc, 0.0);
 #else
   vec4 tubes1 = vec4(1.0);
 #endif
@@ -185,7 +185,7 @@ bool EffectContinues(float T, int i)
       float lagged = T * mix(extinction, 1.0, g_lagFraction);
       float ta = t + float(g_lag + 1) * dt;
       vec3 ahead = io + ta * id;
-      vec4 aheadVoxel = texture(u_scalarsAveraged, (ahead + 0.5) / u_dimensions);
+      vec4 aheadVoxel = textureLod(u_scalarsAveraged, (ahead + 0.5) / u_dimensions, 0.0);
       vec4 s2 = Classify(aheadVoxel.r);
       if (s2.a > 0.0)
       {

@@ -5,7 +5,8 @@
 // [0, u_extent], axis-aligned. The averaged extinction is on the target (light) grid.
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
-layout(rgba32f, binding = 0) uniform image3D u_target; // four channels, one of them this light
+// AVS_LIGHT_FORMAT (defined by the ray caster): the light-volume textures' format.
+layout(AVS_LIGHT_FORMAT, binding = 0) uniform image3D u_target; // four channels, this light's
 uniform int u_channel;
 uniform ivec3 u_targetDimensions;
 uniform vec3 u_targetSpacing;

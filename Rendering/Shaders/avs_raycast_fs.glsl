@@ -30,14 +30,15 @@ const float PI = 3.14159265358979;
 // Scalar at a continuous voxel index (texel centres sit on the voxels).
 float ScalarAt(vec3 index)
 {
-  return texture(u_scalars, (index + 0.5) / u_dimensions).r;
+  return textureLod(u_scalars, (index + 0.5) / u_dimensions, 0.0).r;
 }
 
 // Colour and extinction of a scalar: sigma_t = -ln(1 - min(alpha, 1 - 1e-6)) / u.
+vec2 g_transferScale, g_transferOffset; // scalar -> normalised value -> texture coordinate
 vec4 Classify(float s)
 {
-  float c = clamp((s - u_scalarRange.x) / (u_scalarRange.y - u_scalarRange.x), 0.0, 1.0);
-  vec4 rgba = texture(u_transfer, (c * (u_transferSize - 1.0) + 0.5) / u_transferSize);
+  float c = clamp(s * g_transferScale.x + g_transferOffset.x, 0.0, 1.0);
+  vec4 rgba = textureLod(u_transfer, c * g_transferScale.y + g_transferOffset.y, 0.0);
   float alpha = min(rgba.a, 1.0 - 1e-6);
   return vec4(rgba.rgb, alpha > 0.0 ? -log(1.0 - alpha) / u_unitDistance : 0.0);
 }
@@ -91,6 +92,14 @@ void main()
   int steps = max(1, int(ceil((t1 - t0) / u_sampleDistance - 1e-4)));
   float dt = (t1 - t0) / float(steps);
   float offset = u_jitter == 1 ? Hash(gl_FragCoord.xy) : 0.5;
+  // Per-ray constants: the volume texture coordinate of sample i is first + i * step (texel
+  // centres on the voxels), and the transfer-function coordinates are affine in the scalar.
+  vec3 inverseDimensions = 1.0 / u_dimensions;
+  vec3 firstCoordinate = (io + (t0 + offset * dt) * id + 0.5) * inverseDimensions;
+  vec3 stepCoordinate = dt * id * inverseDimensions;
+  g_transferScale =
+    vec2(1.0 / (u_scalarRange.y - u_scalarRange.x), (u_transferSize - 1.0) / u_transferSize);
+  g_transferOffset = vec2(-u_scalarRange.x * g_transferScale.x, 0.5 / u_transferSize);
 
   //AVS::Effect::Init
 
@@ -108,11 +117,12 @@ void main()
 #endif
     float t = t0 + (float(i) + offset) * dt;
     vec3 index = io + t * id;
+    vec3 coordinate = firstCoordinate + float(i) * stepCoordinate;
 #ifdef AVS_EFFECT_VOLUME
     // The effect's own texture, with the scalar in .r and its per-sample data in .g.
-    vec4 voxel = texture(AVS_EFFECT_VOLUME, (index + 0.5) / u_dimensions);
+    vec4 voxel = textureLod(AVS_EFFECT_VOLUME, coordinate, 0.0);
 #else
-    vec4 voxel = vec4(ScalarAt(index));
+    vec4 voxel = vec4(textureLod(u_scalars, coordinate, 0.0).r);
 #endif
     vec4 here = Classify(voxel.r);
     float extinction = exp(-here.a * dt);
