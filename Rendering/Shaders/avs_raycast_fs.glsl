@@ -27,12 +27,6 @@ uniform int u_jitter;           // 1: jitter the first sample per pixel
 
 const float PI = 3.14159265358979;
 
-// Scalar at a continuous voxel index (texel centres sit on the voxels).
-float ScalarAt(vec3 index)
-{
-  return textureLod(u_scalars, (index + 0.5) / u_dimensions, 0.0).r;
-}
-
 // Colour and extinction of a scalar: sigma_t = -ln(1 - min(alpha, 1 - 1e-6)) / u.
 vec2 g_transferScale, g_transferOffset; // scalar -> normalised value -> texture coordinate
 vec4 Classify(float s)
