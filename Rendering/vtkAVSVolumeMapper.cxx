@@ -55,12 +55,10 @@ struct vtkAVSVolumeMapper::Internals
   // Ambient scattering.
   int AveragedKey[2] = { -1, -1 };
   double AveragedRadius = -1.0;
-  avs::Grid Averaged;         ///< on the light grid (CPU precomputation)
-  avs::Grid AveragedAtVoxels; ///< Averaged interpolated at the voxels
+  avs::Grid Averaged; ///< on the light grid (CPU precomputation)
   int AveragedVersion = 0;
   int AveragedOnGPU = -1;
   std::array<int, 3> AveragedDimensions{ 0, 0, 0 }; ///< the light grid it was computed on
-  int UploadedAveragedVersion = -1;                 ///< the CPU's averaged extinction last uploaded
   const avs::ScatteringTable* SliceTable = nullptr;
   double SliceG = 2.0, SliceAlbedo = -1.0;
   avs::ScatteringSlice Slice;
@@ -201,7 +199,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     in.PropertyTime = property->GetMTime();
     in.TransferUploaded = false;
     ++in.TransferVersion;
-    // Extinction depends on the opacity alone: a change of colour only rebuilds nothing.
+    // Extinction depends on the opacity alone: a change of colour alone rebuilds nothing.
     if (in.Transfer.Opacity != in.ExtinctionOpacity ||
       in.Transfer.Minimum != in.ExtinctionRange[0] ||
       in.Transfer.Maximum != in.ExtinctionRange[1] || in.UnitDistance != in.ExtinctionUnitDistance)
@@ -303,8 +301,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   if (effect == 1)
   {
     // The occlusion volume's grid: the data's, capped like the light volumes'.
-    const avs::GridGeometry occlusionGrid =
-      g.Resampled(avs::LightVolumeDimensions(g.Dimensions, rp.OcclusionVolumeMaximumDimension));
+    const avs::GridGeometry occlusionGrid = g.Capped(rp.OcclusionVolumeMaximumDimension);
     if (in.OcclusionKey[0] != in.ExtinctionKey[0] || in.OcclusionKey[1] != in.ExtinctionKey[1] ||
       in.OcclusionRadius != rp.OcclusionRadius || in.OcclusionDirections != rp.NumberOfDirections ||
       in.OcclusionDimensions != occlusionGrid.Dimensions || !in.OcclusionUploaded)
@@ -367,8 +364,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     ++in.SliceVersion;
   }
   // The averaged extinction and the light volumes share the light grid.
-  const avs::GridGeometry lightGrid =
-    g.Resampled(avs::LightVolumeDimensions(g.Dimensions, rp.LightVolumeMaximumDimension));
+  const avs::GridGeometry lightGrid = g.Capped(rp.LightVolumeMaximumDimension);
   if (in.AveragedKey[0] != in.DataVersion || in.AveragedKey[1] != in.OpacityVersion ||
     in.AveragedRadius != rp.AmbientRadius || in.AveragedOnGPU != (gpuScattering ? 1 : 0) ||
     in.AveragedDimensions != lightGrid.Dimensions)
@@ -387,9 +383,13 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     }
     else
     {
-      // Uploaded with the light volumes below.
       in.Averaged = avs::AverageExtinctionOn(in.Extinction, rp.AmbientRadius, lightGrid);
-      in.AveragedAtVoxels = avs::ResampleTrilinear(in.Averaged, g);
+      if (!in.RayCaster.UploadScalarsAveraged(
+            in.Scalars, avs::ResampleTrilinear(in.Averaged, g), error))
+      {
+        vtkErrorMacro("Cannot render: " << error);
+        return false;
+      }
     }
     in.AveragedKey[0] = in.DataVersion;
     in.AveragedKey[1] = in.OpacityVersion;
@@ -451,12 +451,6 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
       ++this->NumberOfLightVolumeRebuilds;
     }
   }
-  if (!gpu && in.UploadedAveragedVersion != in.AveragedVersion &&
-    !in.RayCaster.UploadScalarsAveraged(in.Scalars, in.AveragedAtVoxels, error))
-  {
-    vtkErrorMacro("Cannot render: " << error);
-    return false;
-  }
   if (!gpu && changed)
   {
     std::vector<avs::Grid> volumes;
@@ -471,7 +465,6 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     }
   }
   in.LightVolumesUploaded = true;
-  in.UploadedAveragedVersion = in.AveragedVersion;
   return true;
 }
 

@@ -48,6 +48,23 @@ GridGeometry GridGeometry::Resampled(const std::array<int, 3>& dims) const
   return g;
 }
 
+GridGeometry GridGeometry::Capped(int maximum) const
+{
+  const auto& n = this->Dimensions;
+  const int largest = std::max({ n[0], n[1], n[2] });
+  std::array<int, 3> capped = n;
+  if (largest > maximum && maximum >= 2)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      capped[a] =
+        std::max(2, static_cast<int>(std::lround(static_cast<double>(n[a]) * maximum / largest)));
+      capped[a] = std::min(capped[a], n[a]);
+    }
+  }
+  return this->Resampled(capped);
+}
+
 double Grid::SampleIndex(const Vec3& p, double outside) const
 {
   const auto& n = this->Geometry.Dimensions;

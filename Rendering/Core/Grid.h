@@ -58,6 +58,9 @@ struct GridGeometry
   }
   /// The same placement with other dimensions covering the same box (for coarser grids).
   GridGeometry Resampled(const std::array<int, 3>& dims) const;
+  /// The same box with at most `maximum` points per axis (at least 2), keeping the aspect
+  /// ratio: the grid of the light volumes, the averaged extinction and the occlusion volume.
+  GridGeometry Capped(int maximum) const;
   /// Length of the box diagonal in world units.
   double Diagonal() const { return Length(this->LocalExtent()); }
 };

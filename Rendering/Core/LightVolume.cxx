@@ -91,18 +91,9 @@ double March(const Grid& averaged,
 
 std::array<int, 3> LightVolumeDimensions(const std::array<int, 3>& dims, int maximum)
 {
-  const int largest = std::max({ dims[0], dims[1], dims[2] });
-  std::array<int, 3> out = dims;
-  if (largest > maximum && maximum >= 2)
-  {
-    for (int a = 0; a < 3; ++a)
-    {
-      out[a] = std::max(
-        2, static_cast<int>(std::lround(static_cast<double>(dims[a]) * maximum / largest)));
-      out[a] = std::min(out[a], dims[a]);
-    }
-  }
-  return out;
+  GridGeometry g;
+  g.Dimensions = dims;
+  return g.Capped(maximum).Dimensions;
 }
 
 double TubeTransmittance(const Grid& averaged,

@@ -81,8 +81,7 @@ bool Precompute(const VolumeScene& scene,
   if (mode == RenderMode::AmbientOcclusion)
   {
     out.Occlusion = ComputeAmbientOcclusion(out.Extinction,
-      geometry.Resampled(
-        LightVolumeDimensions(geometry.Dimensions, p.OcclusionVolumeMaximumDimension)),
+      geometry.Capped(p.OcclusionVolumeMaximumDimension),
       p.OcclusionRadius,
       p.NumberOfDirections,
       0.0,
@@ -93,8 +92,7 @@ bool Precompute(const VolumeScene& scene,
   {
     out.Slice = table->Slice(p.Anisotropy, p.Albedo);
     // The averaged extinction lives on the light volumes' grid, as in the GPU mappers.
-    const GridGeometry lightGeometry =
-      geometry.Resampled(LightVolumeDimensions(geometry.Dimensions, p.LightVolumeMaximumDimension));
+    const GridGeometry lightGeometry = geometry.Capped(p.LightVolumeMaximumDimension);
     out.Averaged = AverageExtinctionOn(out.Extinction, p.AmbientRadius, lightGeometry);
     out.AveragedAtVoxels = ResampleTrilinear(out.Averaged, geometry);
     report(0.2);

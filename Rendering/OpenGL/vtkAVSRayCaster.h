@@ -166,7 +166,7 @@ private:
   unsigned int ComputeProgram = 0;   ///< GL name of the light-volume compute program
   unsigned int OcclusionProgram = 0; ///< GL name of the ambient-occlusion compute program
   unsigned int AverageProgram = 0;   ///< GL name of the averaged-extinction compute program
-  int ComputeSupport = -1;
+  int ComputeSupport = -1;           ///< -1 unknown, 0 no, 1 yes
   mutable int SoftwareRenderer = -1; ///< -1 unknown, 0 no, 1 yes (IsSoftwareRenderer)
   std::array<int, 3> LightTextureDimensions{ 0, 0, 0 };
   bool DepthWarningGiven = false;
