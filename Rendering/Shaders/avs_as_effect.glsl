@@ -92,8 +92,6 @@ float TableTauCoordinate(float tau)
   return log(1.0 + clamp(tau, 0.0, u_tableTauMaximum)) * g_tauScale;
 }
 
-// E_j(x') A(theta_j; tau) of light j (a constant) at x'; `tube` is its tube transmittance
-// there, v the table coordinate of tau.
 // Light j's tube transmittance in the packed light-volume textures (lights 0-3, 4-7). j is a
 // constant in the unrolled loops, so this folds to one component.
 float Tube(int j, vec4 tubes0, vec4 tubes1)
@@ -101,6 +99,8 @@ float Tube(int j, vec4 tubes0, vec4 tubes1)
   return j < 4 ? tubes0[clamp(j, 0, 3)] : tubes1[clamp(j - 4, 0, 3)];
 }
 
+// E_j(x') A(theta_j; tau) of light j (a constant) at x'; `tube` is its tube transmittance
+// there, v the table coordinate of tau.
 vec3 LightInScattering(int j, vec3 world, vec3 direction, float tube, float v)
 {
   vec3 propagation, irradiance;
