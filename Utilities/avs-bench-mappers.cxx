@@ -38,6 +38,12 @@
 
 namespace
 {
+double Median(std::vector<double> values)
+{
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
 double Seconds(const std::chrono::steady_clock::time_point& start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -91,8 +97,7 @@ struct Bench
       times.push_back(this->Frame());
     }
     this->Renderer->RemoveVolume(volume);
-    std::sort(times.begin(), times.end());
-    return { first, times[times.size() / 2] };
+    return { first, Median(times) };
   }
 };
 } // namespace
@@ -266,11 +271,9 @@ int main(int argc, char* argv[])
     std::fprintf(stderr, "avs-bench-mappers: the rebuilds were not the ones measured\n");
     return 1;
   }
-  std::sort(tfFrames.begin(), tfFrames.end());
-  std::sort(lightFrames.begin(), lightFrames.end());
-  const double tfRebuild = tfFrames[changes / 2];
+  const double tfRebuild = Median(tfFrames);
   std::printf("bench rebuild_transfer_function_as4 %.4f s\n", tfRebuild);
-  std::printf("bench rebuild_light_move_as4 %.4f s\n", lightFrames[changes / 2]);
+  std::printf("bench rebuild_light_move_as4 %.4f s\n", Median(lightFrames));
 
   std::printf("ratio ea_over_vtk_ea %.3f\n", eaTimes.second / vtkTimes.second);
   std::printf("ratio as_over_ea %.3f\n", as1Times.second / eaTimes.second);
