@@ -94,7 +94,7 @@ avs::Grid MakeDense(int n)
   return g;
 }
 
-StudyScene MakeScene(const std::string& name, int voxels)
+StudyScene MakeScene(const std::string& name, int voxels, double cloudOpacity)
 {
   StudyScene s;
   s.Name = name;
@@ -102,7 +102,7 @@ StudyScene MakeScene(const std::string& name, int voxels)
   if (name == "cloud_back" || name == "cloud_side")
   {
     s.Density = avs::MakeCloud(voxels);
-    s.Property = Property(0.6, 2.0 / 40.0, { { 0.0, white }, { 1.0, white } }, 0.05);
+    s.Property = Property(cloudOpacity, 2.0 / 40.0, { { 0.0, white }, { 1.0, white } }, 0.05);
     s.Albedo = 0.95;
     s.Anisotropy = 0.6;
     s.Lights.push_back(name == "cloud_back" ? Directional({ -0.3, 0.6, -1.0 }, 9.0, white)
@@ -177,6 +177,16 @@ std::vector<double> Pixels(vtkImageData* image)
   return out;
 }
 
+double Sum(const std::vector<double>& values)
+{
+  double sum = 0.0;
+  for (double v : values)
+  {
+    sum += v;
+  }
+  return sum;
+}
+
 vtkSmartPointer<vtkImageData> ToPicture(const std::vector<double>& rgb,
   int size,
   double scale = 1.0)
@@ -197,13 +207,32 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
   std::vector<AccuracyResult>& results,
   double* pathTracerNoise)
 {
+  const std::vector<std::string> known = AccuracySettings().Scenes;
+  for (const std::string& name : settings.Scenes)
+  {
+    if (std::find(known.begin(), known.end(), name) == known.end())
+    {
+      std::fprintf(stderr, "avs-accuracy: unknown scene '%s'\n", name.c_str());
+      return false;
+    }
+  }
+  if (!(settings.CloudOpacity > 0.0 && settings.CloudOpacity <= 1.0))
+  {
+    std::fprintf(stderr, "avs-accuracy: the cloud opacity must be in (0, 1]\n");
+    return false;
+  }
+  if (!(settings.AmbientRadius >= 0.0 && std::isfinite(settings.AmbientRadius)))
+  {
+    std::fprintf(stderr, "avs-accuracy: the ambient radius must be finite and >= 0\n");
+    return false;
+  }
   const int size = settings.ImageSize;
   vtkNew<vtkImageAppend> rows;
   rows->SetAppendAxis(1);
   double worstNoise = 0.0;
   for (const std::string& name : settings.Scenes)
   {
-    StudyScene scene = MakeScene(name, settings.Voxels);
+    StudyScene scene = MakeScene(name, settings.Voxels, settings.CloudOpacity);
     auto data = ToImageData(scene.Density);
 
     vtkNew<vtkRenderWindow> window;
@@ -227,6 +256,7 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
       scene.Property, 0.0, 1.0, core.Transfer, core.UnitDistance, error);
     core.Lights = vtkAVSSceneTranslator::ToLights(renderer, renderer->GetActiveCamera());
     avs::ScatteringParameters p;
+    p.AmbientRadius = settings.AmbientRadius;
     p.Albedo = scene.Albedo;
     p.Anisotropy = scene.Anisotropy;
     const avs::ScatteringParameters rp = p.Resolve(core.Scalars.Geometry);
@@ -267,6 +297,8 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
     vtkNew<vtkAmbientOcclusionVolumeMapper> ao;
     vtkNew<vtkAmbientScatteringVolumeMapper> as;
     ao->SetAmbientWeight(k);
+    ao->SetOcclusionRadius(settings.AmbientRadius);
+    as->SetAmbientRadius(settings.AmbientRadius);
     as->SetAlbedo(scene.Albedo);
     as->SetAnisotropy(scene.Anisotropy);
 
@@ -328,15 +360,34 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
       r.Model = models[m];
       r.Rmse = std::sqrt(se / reference.size());
       r.RelativeL1 = norm > 0 ? l1 / norm : 0.0;
+      r.TruthNoise = noise;
       results.push_back(r);
     }
     if (settings.Verbose)
     {
+      // Where the light comes from: the truth's single-scattered share (one bounce, same seed),
+      // and each model's mean radiance against the truth's (below 1: too dark on average).
+      avs::PathTracerSettings single = pts;
+      single.Seed = 17;
+      single.MaximumBounces = 1;
+      const avs::Image once = avs::RenderPathTraced(
+        core, rp, single, vtkAVSSceneTranslator::ToCamera(renderer->GetActiveCamera()), size, size);
+      double onceSum = 0.0;
+      for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x)
+          for (int c = 0; c < 3; ++c)
+            onceSum += std::clamp(static_cast<double>(once.At(x, y)[c]), 0.0, 1.0);
+      const double truthSum = Sum(reference);
       std::fprintf(stderr,
-        "[avs-accuracy] %s: k = %.3f, path-tracer noise (RMSE) %.4f\n",
+        "[avs-accuracy] %s: k = %.3f, path-tracer noise (RMSE) %.4f, single scattering %.0f %% "
+        "of the truth, mean radiance / truth: ea %.2f ao %.2f as %.2f\n",
         name.c_str(),
         k,
-        noise);
+        noise,
+        truthSum > 0 ? 100.0 * onceSum / truthSum : 0.0,
+        truthSum > 0 ? Sum(pictures[0]) / truthSum : 0.0,
+        truthSum > 0 ? Sum(pictures[1]) / truthSum : 0.0,
+        truthSum > 0 ? Sum(pictures[2]) / truthSum : 0.0);
     }
     if (!settings.OutputPicture.empty())
     {

@@ -20,6 +20,7 @@ struct AccuracyResult
   std::string Model; ///< "ea", "ao" or "as"
   double Rmse = 0.0;
   double RelativeL1 = 0.0;
+  double TruthNoise = 0.0; ///< RMSE of the scene's truth itself (from two seeds)
 };
 
 struct AccuracySettings
@@ -28,6 +29,12 @@ struct AccuracySettings
   int Voxels = 64;
   int SamplesPerPixel = 512;
   std::vector<std::string> Scenes{ "cloud_back", "cloud_side", "nebula_point", "dense_medical" };
+  /// Opacity of the clouds' densest scalar (1.0); the clouds' optical thickness scales with
+  /// -ln(1 - CloudOpacity). 0.6 gives about 27 across the cloud's middle.
+  double CloudOpacity = 0.6;
+  /// Ambient radius of the ambient-scattering mapper and occlusion radius of the AO mapper, in
+  /// world units (the scenes span [-1, 1]^3); 0 keeps their default (1/64 of the diagonal).
+  double AmbientRadius = 0.0;
   std::string OutputPicture; ///< a PNG of truth | EA | AO | AS | 4x |errors|, one row per scene
   bool Verbose = false;
 };
