@@ -96,6 +96,33 @@ std::array<int, 3> LightVolumeDimensions(const std::array<int, 3>& dims, int max
   return g.Capped(maximum).Dimensions;
 }
 
+namespace
+{
+// T at the point `shortenBy` before `world` on the light path towards it (x0 at the least).
+double TransmittanceBefore(const Grid& averaged,
+  const Light& light,
+  const ScatteringSlice& slice,
+  double radius,
+  const Vec3& world,
+  double shortenBy,
+  std::uint64_t* steps)
+{
+  const GridGeometry& geometry = averaged.Geometry;
+  const Vec3 o = geometry.WorldToLocal(world);
+  Vec3 x0;
+  LightPathStart(geometry, light, o, x0);
+  const double distance = Length(o - x0);
+  const Vec3 end = distance > shortenBy ? x0 + (o - x0) * ((distance - shortenBy) / distance) : x0;
+  std::uint64_t count = 0;
+  const double t = March(averaged, slice, radius, x0, end, count);
+  if (steps)
+  {
+    *steps += count;
+  }
+  return t;
+}
+} // namespace
+
 double TubeTransmittance(const Grid& averaged,
   const Light& light,
   const ScatteringSlice& slice,
@@ -103,17 +130,17 @@ double TubeTransmittance(const Grid& averaged,
   const Vec3& world,
   std::uint64_t* steps)
 {
-  const GridGeometry& geometry = averaged.Geometry;
-  const Vec3 o = geometry.WorldToLocal(world);
-  Vec3 x0;
-  LightPathStart(geometry, light, o, x0);
-  std::uint64_t count = 0;
-  const double t = March(averaged, slice, radius, x0, o, count);
-  if (steps)
-  {
-    *steps += count;
-  }
-  return t;
+  return TransmittanceBefore(averaged, light, slice, radius, world, 0.0, steps);
+}
+
+double BallEntryTransmittance(const Grid& averaged,
+  const Light& light,
+  const ScatteringSlice& slice,
+  double radius,
+  const Vec3& world,
+  std::uint64_t* steps)
+{
+  return TransmittanceBefore(averaged, light, slice, radius, world, radius, steps);
 }
 
 Grid ComputeLightVolume(const Grid& averaged,
@@ -128,7 +155,7 @@ Grid ComputeLightVolume(const Grid& averaged,
   Grid out = FillGrid(
     target,
     [&](const Vec3& world, std::uint64_t& work)
-    { return TubeTransmittance(averaged, light, slice, radius, world, &work); },
+    { return BallEntryTransmittance(averaged, light, slice, radius, world, &work); },
     &steps,
     progress);
   if (statistics)

@@ -1,11 +1,18 @@
 // Light volumes by tube marching (ALGORITHM.md section 5).
 //
-// For each voxel centre x of the target grid, the light path runs from x0 (where the light
-// enters the volume box, or the point light itself when it is inside the box) to x. Balls of
-// radius r are chained along it: T(x0) = 1, T(x_i) = T(x_{i-1}) F(r avg_sigma_t(m_i)) with
-// x_i = x0 + 2 r i d and m_i = x_{i-1} + r d, and T(x) interpolates linearly between T(x_n)
-// and T(x_{n+1}) with n = floor(D / 2r) (seed eq. 8.5). With albedo 0, F = exp(-2 tau) and
-// this is a shadow ray with step 2r over the averaged extinction.
+// For a point x, the light path runs from x0 (where the light enters the volume box, or the
+// point light itself when it is inside the box) to x. Balls of radius r are chained along it:
+// T(x0) = 1, T(x_i) = T(x_{i-1}) F(r avg_sigma_t(m_i)) with x_i = x0 + 2 r i d and
+// m_i = x_{i-1} + r d, and T(x) interpolates linearly between T(x_n) and T(x_{n+1}) with
+// n = floor(D / 2r) (seed eq. 8.5). With albedo 0, F = exp(-2 tau) and this is a shadow ray with
+// step 2r over the averaged extinction.
+//
+// A light volume stores, at each grid point x, T where the light enters the ball of radius r
+// around x: at x - r d (x0 when that is nearer to x). The ray caster lights the ball around x'
+// with it. The scattering table's ball is lit by unit irradiance at its surface. Lighting it
+// with T(x') instead would attenuate the light over the ball's near half twice, once in the
+// tube and once inside the table. The seed's eq. 8.9 likewise takes each light's distributed
+// radiance at its own point x_j, not at x'. ARCHITECTURE.md records this choice.
 #ifndef avs_LightVolume_h
 #define avs_LightVolume_h
 
@@ -24,8 +31,9 @@ struct LightVolumeStatistics
   std::uint64_t Steps = 0; ///< balls marched, over all voxels
 };
 
-/// Tube transmittance of `light` on the grid `target` (same box as `averaged`). `slice` holds F
-/// for the current g and albedo; `radius` is the ambient radius r (> 0). Multi-threaded.
+/// The light volume of `light` on the grid `target` (same box as `averaged`): at each point,
+/// BallEntryTransmittance. `slice` holds F for the current g and albedo; `radius` is the
+/// ambient radius r (> 0). Multi-threaded.
 Grid ComputeLightVolume(const Grid& averaged,
   const GridGeometry& target,
   const Light& light,
@@ -34,8 +42,17 @@ Grid ComputeLightVolume(const Grid& averaged,
   LightVolumeStatistics* statistics = nullptr,
   const std::function<void(double)>& progress = {});
 
-/// The tube transmittance at one world point (what ComputeLightVolume stores per voxel).
+/// The tube transmittance T at one world point.
 double TubeTransmittance(const Grid& averaged,
+  const Light& light,
+  const ScatteringSlice& slice,
+  double radius,
+  const Vec3& world,
+  std::uint64_t* steps = nullptr);
+
+/// T where the light enters the ball of radius `radius` around a world point: at distance
+/// max(D - r, 0) from x0 on the light path (what ComputeLightVolume stores per point).
+double BallEntryTransmittance(const Grid& averaged,
   const Light& light,
   const ScatteringSlice& slice,
   double radius,

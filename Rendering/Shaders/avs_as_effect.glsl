@@ -99,8 +99,9 @@ float Tube(int j, vec4 tubes0, vec4 tubes1)
   return j < 4 ? tubes0[clamp(j, 0, 3)] : tubes1[clamp(j - 4, 0, 3)];
 }
 
-// E_j(x') A(theta_j; tau) of light j (a constant) at x'; `tube` is its tube transmittance
-// there, v the table coordinate of tau.
+// E_j(x') A(theta_j; tau) of light j (a constant) at x'; `tube` is the light volume there (the
+// tube transmittance where the light enters the ball around x', Core/LightVolume.h), v the
+// table coordinate of tau.
 vec3 LightInScattering(int j, vec3 world, vec3 direction, float tube, float v)
 {
   vec3 propagation, irradiance;

@@ -1,8 +1,10 @@
 #version 430
 // Tube marching of one light into one channel of a packed light-volume texture
 // (ALGORITHM.md section 5; the CPU version is Rendering/Core/LightVolume.cxx, which the tests
-// hold this pass against). All positions are in the data's local frame: the volume box is
-// [0, u_extent], axis-aligned. The averaged extinction is on the target (light) grid.
+// hold this pass against). Each point x gets the tube transmittance where the light enters the
+// ball of radius r around x, at distance max(D - r, 0) from x0 (LightVolume.h says why). All
+// positions are in the data's local frame: the volume box is [0, u_extent], axis-aligned. The
+// averaged extinction is on the target (light) grid.
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 // AVS_LIGHT_FORMAT (defined by the ray caster): the light-volume textures' format.
@@ -121,15 +123,16 @@ void main()
   if (D > 0.0)
   {
     vec3 d = (x - x0) / D;
-    float ratio = D / (2.0 * u_radius);
+    // The ball's entry point is D - r from x0 along the path.
+    float ratio = max(D - u_radius, 0.0) / (2.0 * u_radius);
     int n = int(floor(ratio));
     float eta = ratio - float(n);
     g_tauScale = float(u_tauNodes - 1) / log(1.0 + u_tauMaximum);
     vec3 dims = vec3(u_targetDimensions);
     g_coordinateScale = 1.0 / (u_targetSpacing * dims);
     g_coordinateOffset = 0.5 / dims;
-    // Ball centres m_i = x0 + (2 i - 1) r d. Those of balls 1..n lie on the segment x0 -> x,
-    // inside the box; only ball n + 1's may lie beyond x, outside.
+    // Ball centres m_i = x0 + (2 i - 1) r d. Since 2 r n <= D - r, all n + 1 of them lie on the
+    // segment x0 -> x, inside the box; the last one keeps the box test against rounding.
     vec3 m = x0 + d * u_radius;
     vec3 step = d * (2.0 * u_radius);
     float logTn = 0.0;

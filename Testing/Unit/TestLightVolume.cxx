@@ -1,4 +1,5 @@
-// Tube-marched light volumes: the albedo-0 limit is a shadow ray with step 2r, empty space
+// Tube-marched light volumes: the albedo-0 limit is a shadow ray with step 2r, a light volume
+// holds the tube transmittance where the light enters the ball around each point, empty space
 // lets everything through, a slab casts its shadow, point lights inside and outside the box.
 #include "AveragedExtinction.h"
 #include "LightVolume.h"
@@ -8,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace avs;
@@ -58,6 +60,13 @@ double ShadowRay(const Grid& averaged, const Vec3& x0, const Vec3& x, double r)
   }
   return (1 - eta) * T[n] + eta * T[n + 1];
 }
+
+// The point r before x on the straight path x0 -> x (x0 when x is nearer than r).
+Vec3 BallEntry(const Vec3& x0, const Vec3& x, double r)
+{
+  const double D = Length(x - x0);
+  return D > r ? x0 + (x - x0) * ((D - r) / D) : x0;
+}
 } // namespace
 
 TEST(LightVolume, AlbedoZeroIsAShadowRayWithStepTwoR)
@@ -78,9 +87,46 @@ TEST(LightVolume, AlbedoZeroIsAShadowRayWithStepTwoR)
       for (int i = 0; i < 24; ++i)
       {
         const Vec3 x{ double(i), double(j), double(k) };
-        EXPECT_NEAR(lv.At(i, j, k), ShadowRay(averaged, { 0.0, x.y, x.z }, x, r), 1e-6);
-        EXPECT_NEAR(lp.At(i, j, k), ShadowRay(averaged, p, x, r), 1e-6);
+        const Vec3 x0{ 0.0, x.y, x.z };
+        // At the point itself (T of ALGORITHM section 5) ...
+        EXPECT_NEAR(
+          TubeTransmittance(averaged, sun, slice, r, x), ShadowRay(averaged, x0, x, r), 1e-6);
+        EXPECT_NEAR(
+          TubeTransmittance(averaged, lamp, slice, r, x), ShadowRay(averaged, p, x, r), 1e-6);
+        // ... and, in the light volume, where the light enters the ball of radius r around it.
+        EXPECT_NEAR(lv.At(i, j, k), ShadowRay(averaged, x0, BallEntry(x0, x, r), r), 1e-6);
+        EXPECT_NEAR(lp.At(i, j, k), ShadowRay(averaged, p, BallEntry(p, x, r), r), 1e-6);
       }
+}
+
+TEST(LightVolume, HoldsTheTransmittanceWhereTheLightEntersTheBall)
+{
+  // A slab in front of the points, lit along +z, with scattering (F above exp(-2 tau)).
+  const GridGeometry g = Box(20);
+  Grid ext(g);
+  for (int k = 3; k <= 8; ++k)
+    for (int j = 0; j < 20; ++j)
+      for (int i = 0; i < 20; ++i)
+        ext.At(i, j, k) = 0.3f;
+  const double r = 1.5;
+  const Grid averaged = AverageExtinction(ext, r);
+  const ScatteringSlice slice = Shipped().Slice(0.6, 0.9);
+  const Light sun = Light::Directional({ 0, 0, 1 }, { 1, 1, 1 });
+  const Grid lv = ComputeLightVolume(averaged, g, sun, slice, r);
+  for (int k = 0; k < 20; ++k)
+  {
+    const double entry = std::max(0.0, k - r);
+    EXPECT_NEAR(
+      lv.At(10, 10, k), TubeTransmittance(averaged, sun, slice, r, { 10, 10, entry }), 1e-6);
+    EXPECT_NEAR(lv.At(10, 10, k),
+      BallEntryTransmittance(averaged, sun, slice, r, { 10.0, 10.0, double(k) }),
+      1e-6);
+  }
+  // Inside and behind the slab, the ball's light is what reaches its near side, more than what
+  // reaches its centre.
+  EXPECT_GT(lv.At(10, 10, 8), TubeTransmittance(averaged, sun, slice, r, { 10, 10, 8 }) + 0.01);
+  // Points within r of where the light enters the box are unshadowed.
+  EXPECT_NEAR(lv.At(10, 10, 1), 1.0, 1e-9);
 }
 
 TEST(LightVolume, EmptyVolumeLetsEverythingThrough)
@@ -169,12 +215,12 @@ TEST(LightVolume, WorkFollowsDistanceOverTwoR)
   LightVolumeStatistics small, large;
   ComputeLightVolume(averaged, g, sun, slice, 0.5, &small);
   ComputeLightVolume(averaged, g, sun, slice, 2.0, &large);
-  // Along x, voxel i is i units from the entry: floor(i / 2r) + 1 balls each; the voxels on
-  // the entry face (i = 0) need none.
+  // Along x, voxel i is i units from where the light enters the box, and its ball's entry point
+  // i - r: floor((i - r) / 2r) + 1 balls each; voxels within r of the box face need none.
   std::uint64_t expected = 0;
   for (int i = 1; i < 20; ++i)
   {
-    expected += static_cast<std::uint64_t>(std::floor(i / 1.0)) + 1;
+    expected += static_cast<std::uint64_t>(std::floor((i - 0.5) / 1.0)) + 1;
   }
   EXPECT_EQ(small.Steps, expected * 400);
   EXPECT_LT(large.Steps * 3, small.Steps);
