@@ -208,6 +208,11 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
   double* pathTracerNoise)
 {
   const std::vector<std::string> known = AccuracySettings().Scenes;
+  if (settings.Scenes.empty())
+  {
+    std::fprintf(stderr, "avs-accuracy: no scenes to render\n");
+    return false;
+  }
   for (const std::string& name : settings.Scenes)
   {
     if (std::find(known.begin(), known.end(), name) == known.end())

@@ -25,17 +25,19 @@ int main(int argc, char* argv[])
     {
       std::printf(
         "Usage: avs-accuracy [--size N] [--voxels N] [--spp N] [--output FILE.png]\n"
-        "                    [--scenes A,B,...] [--cloud-opacity X] [--ambient-radius R]\n\n"
-        "Renders four scenes (cloud_back, cloud_side, nebula_point, dense_medical) with "
-        "the GPU EA, AO and\nambient-scattering mappers and with the path tracer, and "
-        "prints each mapper's error.\n--scenes picks some of them; --cloud-opacity sets "
-        "the opacity of the clouds' densest\nscalar (their optical thickness scales with "
-        "-ln(1 - X)).\n--ambient-radius sets the ambient-scattering mapper's AmbientRadius and the "
-        "AO "
-        "mapper's\nOcclusionRadius (world units; the scenes span [-1, 1]^3; 0: their "
-        "default, 1/64 of the diagonal).\nDefaults: --size 96 --voxels 64 --spp 512 --output "
-        "accuracy.png "
-        "--cloud-opacity 0.6\n");
+        "                    [--scenes A,B,...] [--cloud-opacity X] [--ambient-radius R]\n"
+        "\n"
+        "Renders four scenes (cloud_back, cloud_side, nebula_point, dense_medical) with the GPU\n"
+        "EA, AO and ambient-scattering mappers and with the path tracer, and prints each\n"
+        "mapper's error.\n"
+        "  --scenes          some of the scenes, comma-separated\n"
+        "  --cloud-opacity   opacity of the clouds' densest scalar, in (0, 1]; their optical\n"
+        "                    thickness scales with -ln(1 - X)\n"
+        "  --ambient-radius  the ambient-scattering mapper's AmbientRadius and the AO mapper's\n"
+        "                    OcclusionRadius (world units; the scenes span [-1, 1]^3; 0: their\n"
+        "                    default, 1/64 of the diagonal)\n"
+        "Defaults: --size 96 --voxels 64 --spp 512 --output accuracy.png --cloud-opacity 0.6\n"
+        "--ambient-radius 0\n");
       return 0;
     }
     if (i + 1 >= argc)

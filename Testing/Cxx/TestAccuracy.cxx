@@ -86,11 +86,13 @@ int main(int, char*[])
   std::vector<AccuracyResult> none;
   AccuracySettings unknown = settings;
   unknown.Scenes = { "cloud_back", "no_such_scene" };
+  AccuracySettings empty = settings;
+  empty.Scenes.clear();
   AccuracySettings opaque = settings;
   opaque.CloudOpacity = 0.0;
   AccuracySettings radius = settings;
   radius.AmbientRadius = std::numeric_limits<double>::quiet_NaN();
-  for (const AccuracySettings* bad : { &unknown, &opaque, &radius })
+  for (const AccuracySettings* bad : { &unknown, &empty, &opaque, &radius })
   {
     if (RunAccuracyStudy(*bad, none) || !none.empty())
     {
