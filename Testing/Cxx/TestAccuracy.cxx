@@ -4,7 +4,7 @@
 // - on the study's four scenes (clouds of optical thickness about 27 lit from behind and from
 //   the side, a nebula with a point light inside, a dense medical-like volume) ambient
 //   scattering is closer to the truth than EA and AO;
-// - so it is on an optically thin cloud (about 2.5 across, --cloud-opacity 0.08), lit from
+// - so it is on an optically thin cloud (about 2.6 across, --cloud-opacity 0.08), lit from
 //   behind and from the side.
 // README.md ("Accuracy against the truth") gives the full-size figures and where ambient
 // scattering does not win (side-lit clouds of intermediate thickness).
