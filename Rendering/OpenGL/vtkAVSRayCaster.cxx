@@ -487,6 +487,7 @@ bool vtkAVSRayCaster::EnsureProgram(avs::RenderMode mode, const std::string& def
   std::string dec, init, sample;
   SplitEffect(effect, dec, init, sample);
   // The compile-time choices go before the first snippet that may test them.
+  Replace(fs, "//AVS::Classify::Dec", avs_classify);
   Replace(fs, "//AVS::Lights::Dec", defines + avs_lights);
   Replace(fs, "//AVS::Effect::Dec", dec);
   Replace(fs, "//AVS::Effect::Init", init);
@@ -528,7 +529,9 @@ bool vtkAVSRayCaster::SupportsComputeShaders()
       "#define AVS_LIGHT_FORMAT " + (this->IsSoftwareRenderer() ? "rgba32f" : "rgba16f") + "\n");
   this->ComputeProgram = this->BuildComputeProgram(lightVolume.c_str(), "light-volume");
   this->OcclusionProgram = this->BuildComputeProgram(avs_occlusion_cs, "ambient-occlusion");
-  this->AverageProgram = this->BuildComputeProgram(avs_average_cs, "averaged-extinction");
+  std::string average = avs_average_cs;
+  Replace(average, "//AVS::Classify::Dec", avs_classify);
+  this->AverageProgram = this->BuildComputeProgram(average.c_str(), "averaged-extinction");
   this->ComputeSupport =
     this->ComputeProgram && this->OcclusionProgram && this->AverageProgram ? 1 : 0;
   return this->ComputeSupport == 1;

@@ -26,10 +26,8 @@ uniform float u_inverseCount; // 1 / prod(2 k_a + 1), applied in the last pass
 uniform sampler3D u_scalars;  // passes 0 and 4
 uniform sampler3D u_averaged; // pass 4: the result of pass 3, on the target grid
 uniform vec3 u_target;        // pass 4: the target grid's dimensions
-uniform sampler1D u_transfer; // pass 0: opacity in .a over u_scalarRange
-uniform vec2 u_scalarRange;
-uniform float u_transferSize;
-uniform float u_unitDistance;
+// Pass 0: Classify(s), the ray caster's classification (avs_classify.glsl).
+//AVS::Classify::Dec
 
 void Store(ivec3 v, double sum)
 {
@@ -45,14 +43,11 @@ void main()
     ivec2 xy = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(xy, u_dimensions.xy)))
       return;
+    InitClassify();
     for (int z = 0; z < u_dimensions.z; ++z)
     {
       ivec3 v = ivec3(xy, z);
-      float s = texelFetch(u_scalars, v, 0).r;
-      float c = clamp((s - u_scalarRange.x) / (u_scalarRange.y - u_scalarRange.x), 0.0, 1.0);
-      float alpha = min(
-        texture(u_transfer, (c * (u_transferSize - 1.0) + 0.5) / u_transferSize).a, 1.0 - 1e-6);
-      imageStore(u_output, v, vec4(alpha > 0.0 ? -log(1.0 - alpha) / u_unitDistance : 0.0));
+      imageStore(u_output, v, vec4(Classify(texelFetch(u_scalars, v, 0).r).a));
     }
     return;
   }

@@ -17,25 +17,14 @@ uniform mat4 u_worldToIndex; // world -> continuous voxel index of the data
 uniform sampler2D u_depth;   // depth of what the renderer drew before
 uniform sampler3D u_scalars; // point scalars, component 0
 uniform vec3 u_dimensions;   // voxels per axis
-uniform sampler1D u_transfer; // rgb colour, a opacity over u_scalarRange
-uniform vec2 u_scalarRange;
-uniform float u_transferSize;
-uniform float u_unitDistance;
 uniform float u_sampleDistance; // world units
 uniform float u_termination;    // stop when T falls below
 uniform int u_jitter;           // 1: jitter the first sample per pixel
 
 const float PI = 3.14159265358979;
 
-// Colour and extinction of a scalar: sigma_t = -ln(1 - min(alpha, 1 - 1e-6)) / u.
-vec2 g_transferScale, g_transferOffset; // scalar -> normalised value -> texture coordinate
-vec4 Classify(float s)
-{
-  float c = clamp(s * g_transferScale.x + g_transferOffset.x, 0.0, 1.0);
-  vec4 rgba = textureLod(u_transfer, c * g_transferScale.y + g_transferOffset.y, 0.0);
-  float alpha = min(rgba.a, 1.0 - 1e-6);
-  return vec4(rgba.rgb, alpha > 0.0 ? -log(1.0 - alpha) / u_unitDistance : 0.0);
-}
+// Classify(s): colour and extinction of a scalar (avs_classify.glsl).
+//AVS::Classify::Dec
 
 // Henyey-Greenstein, mu = cosine between the propagation directions of incoming and scattered
 // light (same convention as Rendering/Core/PhaseFunction.h).
@@ -91,9 +80,7 @@ void main()
   vec3 inverseDimensions = 1.0 / u_dimensions;
   vec3 firstCoordinate = (io + (t0 + offset * dt) * id + 0.5) * inverseDimensions;
   vec3 stepCoordinate = dt * id * inverseDimensions;
-  g_transferScale =
-    vec2(1.0 / (u_scalarRange.y - u_scalarRange.x), (u_transferSize - 1.0) / u_transferSize);
-  g_transferOffset = vec2(-u_scalarRange.x * g_transferScale.x, 0.5 / u_transferSize);
+  InitClassify();
 
   //AVS::Effect::Init
 
