@@ -10,7 +10,7 @@
  *   radius);
  * - per light, a light volume of tube transmittance: balls chained from the light to each voxel,
  *   each passing on the share F of light that a preintegrated table says a homogeneous ball lets
- *   through, scattering included;
+ *   through, scattering included (stored where the light enters the ball around the voxel);
  * - a ray caster that adds, at each sample, the light the ball ahead scatters towards the camera,
  *   read from the preintegrated in-scattering table A for the current Anisotropy and Albedo.
  *
