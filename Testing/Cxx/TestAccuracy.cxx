@@ -76,7 +76,7 @@ int main(int, char*[])
   settings.CloudOpacity = 0.08;
   settings.SamplesPerPixel = 256;
   auto thin = Measure(settings);
-  for (const char* scene : { "cloud_back", "cloud_side" })
+  for (const std::string& scene : settings.Scenes)
   {
     ExpectBetter(thin, scene, "ea");
     ExpectBetter(thin, scene, "ao");
