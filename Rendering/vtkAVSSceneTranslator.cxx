@@ -15,6 +15,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -215,8 +216,12 @@ bool vtkAVSSceneTranslator::ToTransferFunction(vtkVolumeProperty* property,
   return true;
 }
 
-std::vector<avs::Light> vtkAVSSceneTranslator::ToLights(vtkRenderer* renderer, vtkCamera* camera)
+std::vector<avs::Light> vtkAVSSceneTranslator::ToLights(vtkRenderer* renderer,
+  vtkCamera* camera,
+  double lightScale)
 {
+  // VTK light units: E = 4 pi I c (ALGORITHM.md section 1).
+  const double unit = 4.0 * avs::Pi * (std::isfinite(lightScale) ? std::max(0.0, lightScale) : 0.0);
   std::vector<avs::Light> lights;
   auto toVec = [](const double* v) { return avs::Vec3{ v[0], v[1], v[2] }; };
   auto add = [&](vtkLight* l)
@@ -252,7 +257,7 @@ std::vector<avs::Light> vtkAVSSceneTranslator::ToLights(vtkRenderer* renderer, v
     out.FocalPoint = toVec(focal);
     double color[3];
     l->GetDiffuseColor(color);
-    out.Irradiance = toVec(color) * l->GetIntensity();
+    out.Irradiance = toVec(color) * (l->GetIntensity() * unit);
     out.Attenuation = toVec(l->GetAttenuationValues());
     out.ConeAngle = l->GetConeAngle();
     out.Exponent = l->GetExponent();

@@ -45,7 +45,12 @@ public:
 
   /// The switched-on lights of `renderer` in world space (headlights follow the camera, camera
   /// lights are transformed by it). A renderer without lights gets a headlight, as VTK does.
-  static std::vector<avs::Light> ToLights(vtkRenderer* renderer, vtkCamera* camera);
+  /// VTK light units (ALGORITHM.md section 1): irradiance = 4 pi x intensity x diffuse colour x
+  /// `lightScale`, so that a light of intensity 1 on a thin, white, isotropic medium of albedo 1
+  /// gives back the emission-absorption colour, as VTK's own scattering shader does.
+  static std::vector<avs::Light> ToLights(vtkRenderer* renderer,
+    vtkCamera* camera,
+    double lightScale = 1.0);
 
   static avs::Camera ToCamera(vtkCamera* camera);
 };

@@ -240,7 +240,8 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   worldToData->Invert();
 
   // Lights in world space, at most 8.
-  in.WorldLights = vtkAVSSceneTranslator::ToLights(renderer, renderer->GetActiveCamera());
+  in.WorldLights =
+    vtkAVSSceneTranslator::ToLights(renderer, renderer->GetActiveCamera(), rp.LightScale);
   if (in.WorldLights.size() > static_cast<std::size_t>(vtkAVSRayCaster::MaximumNumberOfLights))
   {
     vtkWarningMacro("Only the first " << vtkAVSRayCaster::MaximumNumberOfLights << " of "

@@ -14,6 +14,7 @@ void vtkAmbientOcclusionVolumeMapper::FillParameters(avs::ScatteringParameters& 
   p.AmbientWeight = this->AmbientWeight;
   p.EmissionWeight = this->EmissionWeight;
   p.DirectLightWeight = this->DirectLightWeight;
+  p.LightScale = this->LightScale;
   // The unshadowed direct light is isotropic and unattenuated by albedo.
   p.Albedo = 1.0;
   p.Anisotropy = 0.0;
@@ -30,4 +31,5 @@ void vtkAmbientOcclusionVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AmbientWeight: " << this->AmbientWeight << "\n";
   os << indent << "EmissionWeight: " << this->EmissionWeight << "\n";
   os << indent << "DirectLightWeight: " << this->DirectLightWeight << "\n";
+  os << indent << "LightScale: " << this->LightScale << "\n";
 }

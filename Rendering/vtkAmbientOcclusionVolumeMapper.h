@@ -72,6 +72,15 @@ public:
   vtkGetMacro(DirectLightWeight, double);
   ///@}
 
+  ///@{
+  /**
+   * Multiplies the irradiance of every light of the direct term for this volume only (>= 0;
+   * VTK light units, see vtkAmbientScatteringVolumeMapper::SetLightScale). Default 1.
+   */
+  vtkSetClampMacro(LightScale, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(LightScale, double);
+  ///@}
+
 protected:
   vtkAmbientOcclusionVolumeMapper() = default;
   ~vtkAmbientOcclusionVolumeMapper() override = default;
@@ -84,6 +93,7 @@ protected:
   double AmbientWeight = 1.0;
   double EmissionWeight = 0.0;
   double DirectLightWeight = 0.0;
+  double LightScale = 1.0;
 
 private:
   vtkAmbientOcclusionVolumeMapper(const vtkAmbientOcclusionVolumeMapper&) = delete;

@@ -26,6 +26,7 @@ void vtkAmbientScatteringVolumeMapper::FillParameters(avs::ScatteringParameters&
   p.Anisotropy = this->Anisotropy;
   p.Albedo = this->Albedo;
   p.EmissionWeight = this->EmissionWeight;
+  p.LightScale = this->LightScale;
   p.LightVolumeMaximumDimension = this->LightVolumeMaximumDimension;
 }
 
@@ -53,6 +54,7 @@ void vtkAmbientScatteringVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Anisotropy: " << this->Anisotropy << "\n";
   os << indent << "Albedo: " << this->Albedo << "\n";
   os << indent << "EmissionWeight: " << this->EmissionWeight << "\n";
+  os << indent << "LightScale: " << this->LightScale << "\n";
   os << indent << "LightVolumeMaximumDimension: " << this->LightVolumeMaximumDimension << "\n";
   os << indent << "ScatteringTableFileName: "
      << (this->ScatteringTableFileName ? this->ScatteringTableFileName : "(the shipped table)")

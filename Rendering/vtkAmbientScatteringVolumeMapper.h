@@ -67,6 +67,17 @@ public:
 
   ///@{
   /**
+   * Multiplies the irradiance of every light for this volume only (>= 0). Lights are in VTK's
+   * units: a vtkLight of intensity I and colour c gives the irradiance 4 pi I c, so that a light
+   * of intensity 1 on an optically thin, white, isotropic medium of albedo 1 returns the
+   * emission-absorption colour. Default 1.
+   */
+  vtkSetClampMacro(LightScale, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(LightScale, double);
+  ///@}
+
+  ///@{
+  /**
    * Largest dimension per axis of the grid of the light volumes and the averaged extinction
    * (the data's size, capped, keeping the aspect ratio). Default 128: both vary on the scale of
    * the ambient radius, and on the 256^3 demo nebula a cap of 128 renders within 59 dB PSNR of
@@ -96,6 +107,7 @@ protected:
   double Anisotropy = 0.0;
   double Albedo = 0.9;
   double EmissionWeight = 0.0;
+  double LightScale = 1.0;
   int LightVolumeMaximumDimension = 128;
   char* ScatteringTableFileName = nullptr;
   vtkAmbientScatteringTable* Table;

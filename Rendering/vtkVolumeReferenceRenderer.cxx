@@ -164,7 +164,7 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
     vtkErrorMacro("Cannot render: no camera (set Camera or Renderer).");
     return 1;
   }
-  scene.Lights = vtkAVSSceneTranslator::ToLights(this->Renderer, camera);
+  scene.Lights = vtkAVSSceneTranslator::ToLights(this->Renderer, camera, this->LightScale);
   scene.Background = { this->Background[0], this->Background[1], this->Background[2] };
 
   const avs::RenderMode mode = this->RenderMode == EMISSION_ABSORPTION
@@ -196,6 +196,7 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
   parameters.NumberOfDirections = this->NumberOfDirections;
   parameters.AmbientWeight = this->AmbientWeight;
   parameters.DirectLightWeight = this->DirectLightWeight;
+  parameters.LightScale = this->LightScale;
   parameters.SampleDistance = this->SampleDistance;
   parameters.TerminationTransmittance = this->TerminationTransmittance;
   parameters.LightVolumeMaximumDimension = this->LightVolumeMaximumDimension;
@@ -308,6 +309,7 @@ void vtkVolumeReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfDirections: " << this->NumberOfDirections << "\n";
   os << indent << "AmbientWeight: " << this->AmbientWeight << "\n";
   os << indent << "DirectLightWeight: " << this->DirectLightWeight << "\n";
+  os << indent << "LightScale: " << this->LightScale << "\n";
   os << indent << "SampleDistance: " << this->SampleDistance
      << (this->SampleDistance > 0 ? "" : " (automatic)") << "\n";
   os << indent << "TerminationTransmittance: " << this->TerminationTransmittance << "\n";

@@ -184,6 +184,15 @@ public:
 
   ///@{
   /**
+   * Multiplies the irradiance of every light (>= 0). Lights are in VTK's units: a vtkLight of
+   * intensity I and colour c gives the irradiance 4 pi I c. Default 1.
+   */
+  vtkSetClampMacro(LightScale, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(LightScale, double);
+  ///@}
+
+  ///@{
+  /**
    * Ray-marching step in world units. Default 0: half the smallest voxel spacing.
    */
   vtkSetClampMacro(SampleDistance, double, 0.0, VTK_DOUBLE_MAX);
@@ -254,6 +263,7 @@ protected:
   int NumberOfDirections = 32;
   double AmbientWeight = 1.0;
   double DirectLightWeight = 0.0;
+  double LightScale = 1.0;
   double SampleDistance = 0.0;
   double TerminationTransmittance = 1.0 / 255.0;
   int LightVolumeMaximumDimension = 128;

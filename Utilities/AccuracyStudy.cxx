@@ -50,7 +50,7 @@ vtkSmartPointer<vtkLight> Directional(const avs::Vec3& from,
   l->SetPosition(from.x, from.y, from.z);
   l->SetFocalPoint(0, 0, 0);
   l->SetDiffuseColor(color.x, color.y, color.z);
-  l->SetIntensity(intensity);
+  l->SetIntensity(intensity / (4.0 * avs::Pi)); // `intensity` is the irradiance
   return l;
 }
 
@@ -124,7 +124,7 @@ StudyScene MakeScene(const std::string& name, int voxels, double cloudOpacity)
     lamp->SetPosition(0, 0, 0);
     lamp->SetFocalPoint(0, 0, -1);
     lamp->SetDiffuseColor(1.0, 0.85, 0.6);
-    lamp->SetIntensity(3.0);
+    lamp->SetIntensity(3.0 / (4.0 * avs::Pi)); // irradiance 3
     lamp->SetAttenuationValues(0.2, 0.0, 4.0);
     s.Lights.push_back(lamp);
   }

@@ -172,7 +172,7 @@ int main(int argc, char* argv[])
       light->SetConeAngle(180);
       light->SetPosition(0, 0, 0);
       light->SetFocalPoint(0, 0, -1);
-      light->SetIntensity(10.0);
+      light->SetIntensity(0.8);
     }
     else
     {
@@ -180,7 +180,7 @@ int main(int argc, char* argv[])
       light->SetPositional(false);
       light->SetPosition(d[0], d[1], d[2]);
       light->SetFocalPoint(0, 0, 0);
-      light->SetIntensity(5.0);
+      light->SetIntensity(0.4);
     }
     b.Lights.push_back(light);
   }

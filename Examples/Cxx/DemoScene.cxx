@@ -55,7 +55,7 @@ void PlaceLightsAndCamera(DemoScene& scene)
   point->SetPosition(c);
   point->SetFocalPoint(c[0], c[1], c[2] - 1.0);
   point->SetDiffuseColor(1.0, 0.75, 0.45);
-  point->SetIntensity(14.0);
+  point->SetIntensity(1.1);
   point->SetAttenuationValues(1.0, 0.0, 4.0 / (size * size));
   scene.Renderer->AddLight(point);
 
@@ -65,7 +65,7 @@ void PlaceLightsAndCamera(DemoScene& scene)
   sun->SetPosition(c[0] - size, c[1] + size, c[2] + 0.5 * size);
   sun->SetFocalPoint(c);
   sun->SetDiffuseColor(0.6, 0.75, 1.0);
-  sun->SetIntensity(6.0);
+  sun->SetIntensity(0.5);
   scene.Renderer->AddLight(sun);
 
   vtkCamera* camera = scene.Renderer->GetActiveCamera();

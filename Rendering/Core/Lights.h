@@ -1,9 +1,12 @@
 // Lights as VTK defines them (ALGORITHM.md section 1), in world space.
 //
-//   directional: propagation d = normalize(focal point - position), irradiance E = I * colour
-//   positional:  E = I * colour / (a0 + a1 dist + a2 dist^2)   (VTK's attenuation values)
+//   directional: propagation d = normalize(focal point - position), irradiance E
+//   positional:  E / (a0 + a1 dist + a2 dist^2)   (VTK's attenuation values)
 //   spot:        a positional light with cone half-angle < 90 degrees: zero outside the cone,
 //                times cos(angle to the axis)^exponent inside, as VTK's OpenGL shaders do
+//
+// E is in VTK light units when the light comes from a vtkLight (vtkAVSSceneTranslator::ToLights):
+// E = 4 pi x intensity x colour x LightScale.
 #ifndef avs_Lights_h
 #define avs_Lights_h
 
@@ -23,7 +26,7 @@ struct Light
   LightType Type = LightType::Directional;
   Vec3 Position{ 0, 0, 1 };
   Vec3 FocalPoint{ 0, 0, 0 };
-  Vec3 Irradiance{ 1, 1, 1 };  ///< intensity times colour
+  Vec3 Irradiance{ 1, 1, 1 };  ///< E: 4 pi x intensity x colour x LightScale for a vtkLight
   Vec3 Attenuation{ 1, 0, 0 }; ///< a0, a1, a2 (positional lights)
   double ConeAngle = 180.0;    ///< half-angle in degrees; >= 90 means no cone (point light)
   double Exponent = 1.0;       ///< spot exponent

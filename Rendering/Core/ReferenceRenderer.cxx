@@ -177,9 +177,8 @@ void CastRay(const VolumeScene& scene,
         for (const Light& light : scene.Lights)
         {
           const double mu = Dot(light.PropagationDirection(world), -ray.Direction);
-          direct = direct +
-            light.FreeIrradiance(world) *
-              (4.0 * Pi * p.Albedo * HenyeyGreenstein(mu, p.Anisotropy));
+          direct =
+            direct + light.FreeIrradiance(world) * (p.Albedo * HenyeyGreenstein(mu, p.Anisotropy));
         }
         L = L + Mul(c, direct) * (T * (1.0 - extinction) * p.DirectLightWeight);
       }

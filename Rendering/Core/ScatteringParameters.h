@@ -26,6 +26,9 @@ struct ScatteringParameters
   double Anisotropy = 0.0;     ///< Henyey–Greenstein g in [-0.95, 0.95]
   double AmbientRadius = 0.0;  ///< r in world units; 0: automatic
   double EmissionWeight = 0.0; ///< k_e >= 0: emitted radiance k_e c
+  /// >= 0: multiplies every light's irradiance (VTK light units, E = 4 pi I c LightScale); applied
+  /// where the VTK lights are translated (vtkAVSSceneTranslator::ToLights).
+  double LightScale = 1.0;
 
   // Ambient occlusion (section 7).
   double OcclusionRadius = 0.0;   ///< R in world units; 0: the ambient radius
@@ -62,6 +65,7 @@ struct ScatteringParameters
       p.AmbientRadius = DefaultAmbientRadius(g);
     }
     p.EmissionWeight = std::max(0.0, p.EmissionWeight);
+    p.LightScale = std::isfinite(p.LightScale) ? std::max(0.0, p.LightScale) : 1.0;
     if (!(p.OcclusionRadius > 0.0) || !std::isfinite(p.OcclusionRadius))
     {
       p.OcclusionRadius = p.AmbientRadius;

@@ -18,7 +18,7 @@ vec3 DirectLight(int j, vec3 world, vec3 direction)
   vec3 propagation, irradiance;
   LightAt(j, world, propagation, irradiance);
   float mu = dot(propagation, -direction);
-  return irradiance * (4.0 * PI * u_albedo * HenyeyGreenstein(mu, u_anisotropy));
+  return irradiance * (u_albedo * HenyeyGreenstein(mu, u_anisotropy));
 }
 #endif
 //AVS::Effect::Sample

@@ -111,7 +111,7 @@ inline void AddTestLights(vtkRenderer* renderer)
   sun->SetPositional(false);
   sun->SetPosition(-1.0, 1.0, 0.6);
   sun->SetFocalPoint(0, 0, 0);
-  sun->SetIntensity(14.0);
+  sun->SetIntensity(1.1);
   renderer->AddLight(sun);
   vtkNew<vtkLight> lamp;
   lamp->SetLightTypeToSceneLight();
@@ -120,7 +120,7 @@ inline void AddTestLights(vtkRenderer* renderer)
   lamp->SetPosition(0.3, 0.1, 0.0);
   lamp->SetFocalPoint(0, 0, 0);
   lamp->SetDiffuseColor(1.0, 0.8, 0.5);
-  lamp->SetIntensity(10.0);
+  lamp->SetIntensity(0.8);
   lamp->SetAttenuationValues(1.0, 0.0, 2.0);
   renderer->AddLight(lamp);
 }

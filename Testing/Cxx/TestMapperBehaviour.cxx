@@ -87,7 +87,7 @@ int main(int argc, char* argv[])
     LightAt(scene.Renderer, 1)->SetPosition(0.2, -0.1, 0.1);
     scene.Render();
     AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 3);
-    LightAt(scene.Renderer, 0)->SetIntensity(3.0);
+    LightAt(scene.Renderer, 0)->SetIntensity(0.24);
     scene.Render();
     AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 3);
     AVS_CHECK(mapper->GetNumberOfExtinctionRebuilds() == 1);

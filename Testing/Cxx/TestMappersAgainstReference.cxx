@@ -65,11 +65,11 @@ int main(int argc, char* argv[])
       spot->SetFocalPoint(0, 0, 0);
       spot->SetConeAngle(25);
       spot->SetExponent(2);
-      spot->SetIntensity(20.0);
+      spot->SetIntensity(1.6);
       renderer->AddLight(spot);
       vtkNew<vtkLight> head;
       head->SetLightTypeToHeadlight();
-      head->SetIntensity(2.0);
+      head->SetIntensity(0.16);
       renderer->AddLight(head);
     }
     else if (view == 2)
@@ -89,7 +89,7 @@ int main(int argc, char* argv[])
         light->SetLightTypeToSceneLight();
         light->SetPosition(-d[0], -d[1], -d[2]);
         light->SetFocalPoint(0, 0, 0);
-        light->SetIntensity(0.7);
+        light->SetIntensity(0.056);
         renderer->AddLight(light);
       }
       // 2 r / step > vtkAVSRayCaster::MaximumRingSize.

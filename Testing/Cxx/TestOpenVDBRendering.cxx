@@ -56,7 +56,7 @@ int main(int argc, char* argv[])
   sun->SetPositional(false);
   sun->SetPosition(0.3, 1.0, -0.8); // from above and behind: a cloud lit from behind
   sun->SetFocalPoint(0, 0, 0);
-  sun->SetIntensity(14.0);
+  sun->SetIntensity(1.1);
   renderer->AddLight(sun);
   vtkNew<vtkLight> lamp;
   lamp->SetLightTypeToSceneLight();
@@ -64,7 +64,7 @@ int main(int argc, char* argv[])
   lamp->SetConeAngle(180);
   lamp->SetPosition(0.0, -0.2, 0.0);
   lamp->SetDiffuseColor(1.0, 0.6, 0.3);
-  lamp->SetIntensity(4.0);
+  lamp->SetIntensity(0.32);
   lamp->SetAttenuationValues(1.0, 0.0, 4.0);
   renderer->AddLight(lamp);
   vtkNew<vtkVolume> volume;

@@ -77,7 +77,7 @@ int main(int, char*[])
   light->SetPositional(false);
   light->SetPosition(-1, 1, 1);
   light->SetFocalPoint(0, 0, 0);
-  light->SetIntensity(8.0);
+  light->SetIntensity(0.64);
   renderer->AddLight(light);
 
   vtkNew<vtkVolumeReferenceRenderer> filter;

@@ -49,7 +49,7 @@ def main(path):
     sun.SetPositional(False)
     sun.SetPosition(0, 1, 0.5)
     sun.SetFocalPoint(0, 0, 0)
-    sun.SetIntensity(12.0)
+    sun.SetIntensity(0.95)
     renderer.AddLight(sun)
     renderer.ResetCamera()
     window = vtkRenderWindow()

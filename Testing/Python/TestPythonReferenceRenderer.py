@@ -41,7 +41,7 @@ def main():
     sun.SetPositional(False)
     sun.SetPosition(1, 1, 1)
     sun.SetFocalPoint(0, 0, 0)
-    sun.SetIntensity(10.0)
+    sun.SetIntensity(0.8)
     renderer.AddLight(sun)
 
     filt = ambientscattering.vtkVolumeReferenceRenderer()
