@@ -23,8 +23,8 @@ public:
 
   ///@{
   /**
-   * Occlusion radius R in world units. Default 0: automatic, 1/64 of the volume's diagonal but
-   * at least the smallest voxel spacing.
+   * Occlusion radius R in world units. Default 0: automatic, 1/64 of the volume's diagonal, at
+   * least the smallest voxel spacing and at most half the volume's smallest side.
    */
   vtkSetClampMacro(OcclusionRadius, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(OcclusionRadius, double);

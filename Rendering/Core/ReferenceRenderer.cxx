@@ -153,7 +153,40 @@ void CastRay(const VolumeScene& scene,
     sigmaT = OpacityToExtinction(scene.Transfer.OpacityAt(s), scene.UnitDistance);
     color = scene.Transfer.ColorAt(s);
   };
+  // Ambient in-scattering from the ball around the sample x (eqs. 8.8-8.9), per unit of the
+  // transmittance and of the ray's length.
+  auto inscattered = [&](const Vec3& x)
+  {
+    double sigma;
+    Vec3 color;
+    classify(x, sigma, color);
+    if (!(sigma > 0.0))
+    {
+      return Vec3{ 0, 0, 0 };
+    }
+    const double tau = p.AmbientRadius * SampleLocal(v.AveragedAtVoxels, x, 0.0);
+    const Vec3 world = geometry.LocalToWorld(x);
+    Vec3 inscatter{ 0, 0, 0 };
+    for (std::size_t j = 0; j < scene.Lights.size(); ++j)
+    {
+      const Light& light = scene.Lights[j];
+      const double cosTheta = Dot(light.PropagationDirection(world), -ray.Direction);
+      const double transmittance = SampleLocal(v.LightVolumes[j], x, 1.0);
+      inscatter = inscatter +
+        light.FreeIrradiance(world) * (transmittance * v.Slice.InScatteringCos(cosTheta, tau));
+    }
+    return Mul(color, inscatter) * sigma;
+  };
   Vec3 L{ 0, 0, 0 };
+  if (mode == RenderMode::AmbientScattering)
+  {
+    // The samples 0 to lag lie within r of the ray's start, where nothing attenuates before
+    // them: T r before them is 1 (eq. 8.8 with the ray starting at the camera).
+    for (int i = 0; i <= lag && i < n; ++i)
+    {
+      L = L + inscattered(o + d * (t0 + (i + 0.5) * dt)) * dt;
+    }
+  }
   double T = 1.0;
   for (int i = 0; i < n && T >= p.TerminationTransmittance; ++i)
   {
@@ -194,28 +227,10 @@ void CastRay(const VolumeScene& scene,
       // linearly, T ((1 - fraction) extinction + fraction). This is the integral of
       // ALGORITHM.md section 6 on the sample grid (section "Ray casting" of ARCHITECTURE.md);
       // x' beyond the ray's end adds nothing.
-      const Vec3 xr = o + d * (t + (lag + 1) * dt);
-      const double lagged = T * ((1.0 - fraction) * extinction + fraction);
-      double sigmaR = 0.0;
-      Vec3 cr;
       if (i + lag + 1 < n)
       {
-        classify(xr, sigmaR, cr);
-      }
-      if (sigmaR > 0.0)
-      {
-        const double tau = p.AmbientRadius * SampleLocal(v.AveragedAtVoxels, xr, 0.0);
-        const Vec3 world = geometry.LocalToWorld(xr);
-        Vec3 inscatter{ 0, 0, 0 };
-        for (std::size_t j = 0; j < scene.Lights.size(); ++j)
-        {
-          const Light& light = scene.Lights[j];
-          const double cosTheta = Dot(light.PropagationDirection(world), -ray.Direction);
-          const double transmittance = SampleLocal(v.LightVolumes[j], xr, 1.0);
-          inscatter = inscatter +
-            light.FreeIrradiance(world) * (transmittance * v.Slice.InScatteringCos(cosTheta, tau));
-        }
-        L = L + Mul(cr, inscatter) * (lagged * sigmaR * dt);
+        const double lagged = T * ((1.0 - fraction) * extinction + fraction);
+        L = L + inscattered(o + d * (t + (lag + 1) * dt)) * (lagged * dt);
       }
     }
     T *= extinction;

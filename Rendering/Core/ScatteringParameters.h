@@ -42,11 +42,16 @@ struct ScatteringParameters
   int LightVolumeMaximumDimension = 128;     ///< light volumes use the data's size, capped by this
   int OcclusionVolumeMaximumDimension = 128; ///< the AO volume likewise
 
-  /// The automatic ambient radius of a grid: 1/64 of the box diagonal, but at least one voxel.
+  /// The automatic ambient radius of a grid: 1/64 of the box diagonal, but at least one voxel,
+  /// and at most half the box's smallest side, so that the ball fits into thin volumes (a slab of
+  /// two voxels, a stack of a few slices).
   static double DefaultAmbientRadius(const GridGeometry& g)
   {
     const double minSpacing = std::min({ g.Spacing.x, g.Spacing.y, g.Spacing.z });
-    return std::max(g.Diagonal() / 64.0, minSpacing);
+    const Vec3 side = g.LocalExtent();
+    const double smallestSide = std::min({ side.x, side.y, side.z });
+    const double r = std::max(g.Diagonal() / 64.0, minSpacing);
+    return smallestSide > 0.0 ? std::min(r, 0.5 * smallestSide) : r;
   }
   /// The automatic sample distance: half the smallest spacing.
   static double DefaultSampleDistance(const GridGeometry& g)

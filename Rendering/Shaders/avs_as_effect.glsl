@@ -6,7 +6,9 @@
 // of T(s - r) S(s) over the points s = t + r. Here each sample s = x_i adds its own in-scattered
 // light S (its classification is the one the ray made anyway) times the transmittance r before
 // it, interpolated linearly between the samples k and k + 1 back (r = (k + f) steps), kept in a
-// ring buffer of AVS_RING entries; samples in the first r of the ray add none, as in eq. 8.8.
+// ring buffer of AVS_RING entries. Before the ray's start (the volume box, or the camera inside
+// it) nothing attenuates, so samples in the first r of the ray take T = 1 r before them: eq. 8.8
+// with the ray starting at the camera (ARCHITECTURE.md, "The look-ahead on the sample grid").
 // The ray caster sizes the ring from r and the sample distance when it builds the program; for
 // a radius too large for any ring it defines AVS_LOOKAHEAD_EXPLICIT instead, and the sample
 // k + 1 steps ahead is classified explicitly: the same sum, slower. The CPU reference computes
@@ -173,13 +175,31 @@ bool EffectContinues(float T, int i)
 #endif
 #ifndef AVS_LOOKAHEAD_EXPLICIT
     g_ring[i & (AVS_RING - 1)] = T;
-    float older = i > g_lag ? g_ring[(i - g_lag - 1) & (AVS_RING - 1)] : 0.0;
+    // T at the samples k and k + 1 back; 1 before the ray's start.
+    float newer = i >= g_lag ? g_ring[(i - g_lag) & (AVS_RING - 1)] : 1.0;
+    float older = i > g_lag ? g_ring[(i - g_lag - 1) & (AVS_RING - 1)] : 1.0;
     if (here.a > 0.0 && older >= u_termination)
     {
-      float lagged = mix(g_ring[(i - g_lag) & (AVS_RING - 1)], older, g_lagFraction);
+      float lagged = mix(newer, older, g_lagFraction);
       L += lagged * dt * InScattered(index, origin + t * direction, direction, here, voxel.g);
     }
 #else
+    if (i == 0)
+    {
+      // The samples 0 to k, within r of the ray's start, which no sample reaches k + 1 steps
+      // back: T = 1 r before them.
+      for (int j = 0; j <= g_lag && j < steps; ++j)
+      {
+        float tj = t + float(j) * dt;
+        vec3 first = io + tj * id;
+        vec4 firstVoxel = textureLod(u_scalarsAveraged, (first + 0.5) / u_dimensions, 0.0);
+        vec4 s1 = Classify(firstVoxel.r);
+        if (s1.a > 0.0)
+        {
+          L += dt * InScattered(first, origin + tj * direction, direction, s1, firstVoxel.g);
+        }
+      }
+    }
     if (i + g_lag + 1 < steps)
     {
       // The sample k + 1 steps on, weighted by T interpolated r before it.
