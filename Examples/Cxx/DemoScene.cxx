@@ -55,7 +55,7 @@ void PlaceLightsAndCamera(DemoScene& scene)
   point->SetPosition(c);
   point->SetFocalPoint(c[0], c[1], c[2] - 1.0);
   point->SetDiffuseColor(1.0, 0.75, 0.45);
-  point->SetIntensity(1.1);
+  point->SetIntensity(2.0);
   point->SetAttenuationValues(1.0, 0.0, 4.0 / (size * size));
   scene.Renderer->AddLight(point);
 
@@ -65,12 +65,12 @@ void PlaceLightsAndCamera(DemoScene& scene)
   sun->SetPosition(c[0] - size, c[1] + size, c[2] + 0.5 * size);
   sun->SetFocalPoint(c);
   sun->SetDiffuseColor(0.6, 0.75, 1.0);
-  sun->SetIntensity(0.5);
+  sun->SetIntensity(0.25);
   scene.Renderer->AddLight(sun);
 
   vtkCamera* camera = scene.Renderer->GetActiveCamera();
   camera->SetFocalPoint(c);
-  camera->SetPosition(c[0] + 0.25 * size, c[1] + 0.35 * size, c[2] + 1.3 * size);
+  camera->SetPosition(c[0] + 0.2 * size, c[1] + 0.27 * size, c[2] + 1.0 * size);
   camera->SetViewUp(0, 1, 0);
   camera->SetViewAngle(30.0);
 }

@@ -61,7 +61,7 @@ void Usage()
     "mappers, and writes ea.png, ao.png, as.png and the three side by side\n"
     "(side_by_side.png) into DIR.\n"
     "\n"
-    "  --size N     picture size in pixels, per mapper [256]\n"
+    "  --size N     picture size in pixels, per mapper [512]\n"
     "  --voxels N   voxels per axis of the built-in nebula [128]\n"
     "  --light-grid N  ambient scattering's LightVolumeMaximumDimension [the mapper's default]\n"
     "  --output DIR output folder [build/demo]\n"
@@ -225,7 +225,7 @@ int RenderWithReference(DemoScene& scene, int size, int lightGrid, const std::st
 
 int main(int argc, char* argv[])
 {
-  int size = 256;
+  int size = 512;
   int voxels = 128;
   int lightGrid = 0;
   std::string output = "build/demo";
