@@ -58,6 +58,13 @@ bool LightPathStart(const GridGeometry& geometry, const Light& light, const Vec3
   return true;
 }
 
+// T at x from x0 (seed eq. 8.5), with the tube anchored at x: n = floor(D / 2r) whole balls
+// centred at x - (2i + 1) r d, i < n, and the remaining length 2 r eta at the light's end,
+// between x0 and x0 + 2 r eta, as one ball centred at x0 + eta r d, weighted as eq. 8.5
+// weights the last ball: T = prod F_i ((1 - eta) + eta F_rest). Anchored at x0 instead (balls
+// at x0 + (2i + 1) r d), the balls' phase against a dense surface would change with the
+// surface's distance from x0, and T just behind it with (that distance mod 2r): bands of
+// period 2r along the light (ARCHITECTURE.md, "Light volumes").
 double March(const Grid& averaged,
   const ScatteringSlice& slice,
   double radius,
@@ -75,17 +82,15 @@ double March(const Grid& averaged,
   const auto n = static_cast<std::int64_t>(std::floor(ratio));
   const double eta = ratio - static_cast<double>(n);
   double t = 1.0;
-  double tn = 1.0;
-  for (std::int64_t i = 1; i <= n + 1; ++i)
+  for (std::int64_t i = 0; i < n; ++i)
   {
-    const Vec3 m = x0 + d * ((2.0 * (i - 1) + 1.0) * radius);
-    const double tau = radius * SampleLocal(averaged, m);
-    tn = t;
-    t *= slice.ForwardTransport(tau);
-    ++steps;
+    const Vec3 m = x - d * ((2.0 * i + 1.0) * radius);
+    t *= slice.ForwardTransport(radius * SampleLocal(averaged, m));
   }
-  // tn = T(x_n), t = T(x_{n+1}).
-  return (1.0 - eta) * tn + eta * t;
+  const Vec3 rest = x0 + d * (eta * radius);
+  const double f = slice.ForwardTransport(radius * SampleLocal(averaged, rest));
+  steps += static_cast<std::uint64_t>(n) + 1;
+  return t * ((1.0 - eta) + eta * f);
 }
 } // namespace
 

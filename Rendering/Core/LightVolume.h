@@ -1,11 +1,16 @@
 // Light volumes by tube marching (ALGORITHM.md section 5).
 //
 // For a point x, the light path runs from x0 (where the light enters the volume box, or the
-// point light itself when it is inside the box) to x. Balls of radius r are chained along it:
-// T(x0) = 1, T(x_i) = T(x_{i-1}) F(r avg_sigma_t(m_i)) with x_i = x0 + 2 r i d and
-// m_i = x_{i-1} + r d, and T(x) interpolates linearly between T(x_n) and T(x_{n+1}) with
-// n = floor(D / 2r) (seed eq. 8.5). With albedo 0, F = exp(-2 tau) and this is a shadow ray with
-// step 2r over the averaged extinction.
+// point light itself when it is inside the box) to x, D = |x - x0|. Balls of radius r are
+// chained along it, anchored at x: with n = floor(D / 2r) and eta = D / 2r - n, n whole balls
+// centred at x - (2i + 1) r d (i < n) and the rest, 2 r eta long, at the light's end as a ball
+// centred at x0 + eta r d weighted as seed eq. 8.5 weights its last ball:
+// T(x) = prod_i F(r avg_sigma_t(m_i)) ((1 - eta) + eta F(r avg_sigma_t(x0 + eta r d))).
+// This is ALGORITHM.md section 5's product of the same number of factors, counted from x
+// instead of x0, so that the balls sit at the same places relative to x whatever the distance
+// to the box face: counted from x0, T behind a dense surface depends on (the surface's distance
+// from x0 mod 2r) and shows bands of period 2r (ARCHITECTURE.md, "Light volumes"). With
+// albedo 0, F = exp(-2 tau) and this is a shadow ray with step 2r over the averaged extinction.
 //
 // A light volume stores, at each grid point x, T where the light enters the ball of radius r
 // around x: at x - r d (x0 when that is nearer to x). The ray caster lights the ball around x'

@@ -131,18 +131,20 @@ void main()
     vec3 dims = vec3(u_targetDimensions);
     g_coordinateScale = 1.0 / (u_targetSpacing * dims);
     g_coordinateOffset = 0.5 / dims;
-    // Ball centres m_i = x0 + (2 i - 1) r d. Since 2 r n <= D - r, all n + 1 of them lie on the
-    // segment x0 -> x, inside the box; the last one keeps the box test against rounding.
-    vec3 m = x0 + d * u_radius;
+    // The tube is anchored at the ball's entry point e = x0 + (D - r) d (LightVolume.cxx says
+    // why): n whole balls centred at e - (2 i + 1) r d, i < n, which lie on the segment
+    // x0 -> e, inside the box; the rest, 2 r eta long, as a ball centred at x0 + eta r d,
+    // weighted as eq. 8.5 weights its last ball (the box test keeps it against rounding).
     vec3 step = d * (2.0 * u_radius);
-    float logTn = 0.0;
-    for (int i = 1; i <= n; ++i)
+    vec3 m = x0 + d * (D - 2.0 * u_radius);
+    float logT = 0.0;
+    for (int i = 0; i < n; ++i)
     {
-      logTn += LogForwardTransport(u_radius * AveragedInside(m));
-      m += step;
+      logT += LogForwardTransport(u_radius * AveragedInside(m));
+      m -= step;
     }
-    float logT = logTn + LogForwardTransport(u_radius * Averaged(m));
-    T = (1.0 - eta) * exp(logTn) + eta * exp(logT);
+    float rest = exp(LogForwardTransport(u_radius * Averaged(x0 + d * (eta * u_radius))));
+    T = exp(logT) * ((1.0 - eta) + eta * rest);
   }
   vec4 value = imageLoad(u_target, voxel);
   value[u_channel] = T;

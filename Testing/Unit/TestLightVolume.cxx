@@ -1,6 +1,7 @@
 // Tube-marched light volumes: the albedo-0 limit is a shadow ray with step 2r, a light volume
 // holds the tube transmittance where the light enters the ball around each point, empty space
-// lets everything through, a slab casts its shadow, point lights inside and outside the box.
+// lets everything through, a slab casts its shadow, point lights inside and outside the box, the
+// light behind a dense surface does not depend on the empty space before it (no bands).
 #include "AveragedExtinction.h"
 #include "LightVolume.h"
 #include "ScatteringTable.h"
@@ -41,7 +42,8 @@ Grid ShellExtinction(const GridGeometry& g, double sigma)
 }
 
 // Independent shadow ray over the averaged extinction with step 2r, written from ALGORITHM.md
-// section 5 with exp(-2 tau) in place of F.
+// section 5 with exp(-2 tau) in place of F, the tube counted back from x (LightVolume.h): n
+// whole steps centred at x - (2i + 1) r d, the rest (2 r eta) centred at x0 + eta r d.
 double ShadowRay(const Grid& averaged, const Vec3& x0, const Vec3& x, double r)
 {
   const double D = Length(x - x0);
@@ -52,13 +54,13 @@ double ShadowRay(const Grid& averaged, const Vec3& x0, const Vec3& x, double r)
   const Vec3 d = (x - x0) * (1.0 / D);
   const int n = static_cast<int>(std::floor(D / (2 * r)));
   const double eta = D / (2 * r) - n;
-  std::vector<double> T{ 1.0 };
-  for (int i = 1; i <= n + 1; ++i)
+  double opticalDepth = 0.0;
+  for (int i = 0; i < n; ++i)
   {
-    const Vec3 m = x0 + d * (2 * r * (i - 1) + r);
-    T.push_back(T.back() * std::exp(-2.0 * r * averaged.SampleWorld(m)));
+    opticalDepth += 2.0 * r * averaged.SampleWorld(x - d * ((2 * i + 1) * r));
   }
-  return (1 - eta) * T[n] + eta * T[n + 1];
+  const double rest = std::exp(-2.0 * r * averaged.SampleWorld(x0 + d * (eta * r)));
+  return std::exp(-opticalDepth) * ((1 - eta) + eta * rest);
 }
 
 // The point r before x on the straight path x0 -> x (x0 when x is nearer than r).
@@ -127,6 +129,58 @@ TEST(LightVolume, HoldsTheTransmittanceWhereTheLightEntersTheBall)
   EXPECT_GT(lv.At(10, 10, 8), TubeTransmittance(averaged, sun, slice, r, { 10, 10, 8 }) + 0.01);
   // Points within r of where the light enters the box are unshadowed.
   EXPECT_NEAR(lv.At(10, 10, 1), 1.0, 1e-9);
+}
+
+TEST(LightVolume, LightBehindADenseSurfaceDoesNotDependOnTheEmptySpaceBeforeIt)
+{
+  // A dense fog sphere (a level set turned fog volume: 0 outside, rising to 1 over 2 voxels
+  // inside; sigma_t up to 2.3, opacity 0.9 per voxel) with 4 empty voxels before it, and the
+  // same with 1 or 2 empty voxels more on the side the light comes from. Empty space passes all
+  // light, so the light volume at the same point of the medium must not change. A tube counted
+  // from where the light enters the box (balls at x0 + (2i + 1) r d) moves its balls against the
+  // surface with that distance mod 2r, and T behind the surface with them: zebra bands of
+  // period 2r on dense surfaces.
+  const double r = 1.3, sigma = 2.3;
+  const ScatteringSlice slice = Shipped().Slice(0.0, 0.9);
+  auto lightVolume = [&](int pad, const Light& light)
+  {
+    GridGeometry g;
+    g.Dimensions = { 28 + pad, 28, 28 };
+    Grid ext(g);
+    for (int k = 0; k < 28; ++k)
+      for (int j = 0; j < 28; ++j)
+        for (int i = 0; i < 28; ++i)
+        {
+          const double depth = 9.5 - Length(Vec3{ i - 13.5, j - 13.5, k - 13.5 });
+          ext.At(i + pad, j, k) = static_cast<float>(sigma * std::clamp(depth / 2.0, 0.0, 1.0));
+        }
+    return ComputeLightVolume(AverageExtinction(ext, r), g, light, slice, r);
+  };
+  const Light sun = Light::Directional({ 1, 0.3, -0.2 }, { 1, 1, 1 });
+  const Light lamp = Light::Point({ -30, 12, 15 }, { 1, 1, 1 });
+  for (const Light& light : { sun, lamp })
+  {
+    const Grid reference = lightVolume(0, light);
+    for (int pad : { 1, 2 })
+    {
+      // The point light moves with the medium (a directional light's position and focal point
+      // would both have to).
+      Light moved = light;
+      moved.Position = moved.Position + Vec3{ double(pad), 0, 0 };
+      moved.FocalPoint = moved.FocalPoint + Vec3{ double(pad), 0, 0 };
+      const Grid padded = lightVolume(pad, moved);
+      double largest = 0.0;
+      for (int k = 0; k < 28; ++k)
+        for (int j = 0; j < 28; ++j)
+          for (int i = 0; i < 28; ++i)
+          {
+            largest =
+              std::max(largest, std::abs(double(padded.At(i + pad, j, k)) - reference.At(i, j, k)));
+          }
+      EXPECT_LT(largest, 1e-5) << (light.Type == LightType::Directional ? "sun" : "lamp") << ", "
+                               << pad << " voxels more before the medium";
+    }
+  }
 }
 
 TEST(LightVolume, EmptyVolumeLetsEverythingThrough)
