@@ -483,9 +483,9 @@ int main(int argc, char* argv[])
     if ((which == Variant::Multisampled && setup->Kind == Setup::Multisampling) ||
       (which == Variant::Viewport && setup->Kind == Setup::SSAO))
     {
-      // Multisampling is the set-up itself; vtkSSAOPass renders the renderer at the window's
-      // corner of its framebuffer but reads it back at the viewport's offset, so its own geometry
-      // is misplaced in an offset viewport (VTK 9.1).
+      // Multisampling is the set-up itself; vtkSSAOPass draws the renderer at the viewport's
+      // offset into its viewport-sized framebuffer, so in an offset viewport its own picture of
+      // the ball is shifted and cut (VTK 9.1; the volume follows the ball there).
       continue;
     }
     const std::string variant = VariantName(which);
