@@ -7,6 +7,7 @@
 #include "ScatteringParameters.h"
 #include "ScatteringTable.h"
 #include "vtkAVSRayCaster.h"
+#include "vtkAVSRenderPasses.h"
 #include "vtkAVSSceneTranslator.h"
 
 #include "vtkAlgorithm.h"
@@ -478,6 +479,13 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     vtkErrorMacro("Cannot render: this mapper needs an OpenGL render window.");
     return;
   }
+  // Inside vtkDualDepthPeelingPass's volume peeling the volume is drawn once, in the first call
+  // (see vtkAVSRenderPasses).
+  const vtkAVSRenderPasses::Role role = vtkAVSRenderPasses::RoleOf(volume, this);
+  if (role == vtkAVSRenderPasses::Role::Skip)
+  {
+    return;
+  }
   if (window != in.RayCaster.GetWindow())
   {
     // Another window: its context gets its own resources.
@@ -505,6 +513,9 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.UnitDistance = in.UnitDistance;
   frame.Lights = in.WorldLights;
   frame.Jitter = this->UseJittering != 0;
+  frame.Prop = volume;
+  frame.Mapper = this;
+  frame.PeelingFront = role == vtkAVSRenderPasses::Role::PeelingFront;
   std::string error;
   if (!in.RayCaster.Render(renderer, frame, error))
   {

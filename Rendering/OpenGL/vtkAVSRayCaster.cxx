@@ -1,5 +1,6 @@
 #include "vtkAVSRayCaster.h"
 
+#include "vtkAVSRenderPasses.h"
 #include "vtkAVSShaders.h"
 
 #include "AmbientOcclusion.h"
@@ -7,7 +8,6 @@
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
-#include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -167,6 +167,13 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
     t = nullptr;
   }
   this->LightTextureDimensions = { 0, 0, 0 };
+  // The depth-copy framebuffer belongs to the context too (kept, it would bind a deleted
+  // window's context in the next one).
+  if (this->DepthFramebuffer && window)
+  {
+    this->DepthFramebuffer->ReleaseGraphicsResources(window);
+  }
+  this->DepthFramebuffer = nullptr;
   if (this->Quad && window)
   {
     this->Quad->ReleaseGraphicsResources(window);
@@ -262,6 +269,7 @@ bool vtkAVSRayCaster::UploadScalarGrid(vtkSmartPointer<vtkTextureObject>& textur
   {
     texture->SetInternalFormat(internalFormat);
   }
+  vtkAVSRenderPasses::DiscardErrors(); // the check below is of this upload alone
   // Rows of floats are not padded.
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   if (!texture->Create3DFromRaw(static_cast<unsigned int>(d[0]),
@@ -600,6 +608,7 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
     return false;
   }
   const GLuint program = this->AverageProgram;
+  vtkAVSRenderPasses::DiscardErrors(); // the check at the end is of this pass alone
   this->Window->GetShaderCache()->ReleaseCurrentShader();
   glUseProgram(program);
   auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
@@ -704,6 +713,7 @@ bool vtkAVSRayCaster::ComputeOcclusion(const avs::Grid& extinction,
     offsets.push_back(static_cast<float>(l.z * h / g.Spacing.z));
   }
   const GLuint program = this->OcclusionProgram;
+  vtkAVSRenderPasses::DiscardErrors(); // the check at the end is of this pass alone
   this->Window->GetShaderCache()->ReleaseCurrentShader();
   glUseProgram(program);
   auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
@@ -758,6 +768,7 @@ bool vtkAVSRayCaster::ComputeLightVolume(int index,
     return false;
   }
   const GLuint program = this->ComputeProgram;
+  vtkAVSRenderPasses::DiscardErrors(); // the check at the end is of this pass alone
   // The shader cache must rebind its own program afterwards.
   this->Window->GetShaderCache()->ReleaseCurrentShader();
   glUseProgram(program);
@@ -812,16 +823,18 @@ bool vtkAVSRayCaster::ComputeLightVolume(int index,
 void vtkAVSRayCaster::CaptureDepth(int x, int y, int width, int height)
 {
   vtkOpenGLState* state = this->Window->GetState();
-  GLint samples = 0;
-  glGetIntegerv(GL_SAMPLES, &samples);
-  // The depth texture must have the framebuffer's depth format for a blit (multisampled
-  // framebuffers cannot be copied from, only resolved by a blit).
-  GLint bits = 24, type = GL_UNSIGNED_NORMALIZED, stencil = 0;
-  if (samples > 0)
+  vtkAVSRenderPasses::DiscardErrors(); // the check below is of this copy alone
+  // A blit from the read framebuffer (the renderer's or a render pass's) into a texture of its
+  // depth format: it resolves multisampled framebuffers, and Mesa refuses glCopyTexImage2D from
+  // some single-sampled ones (vtkToneMappingPass's float depth renderbuffer).
+  GLint readFramebuffer = 0;
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
+  const GLenum attachment = readFramebuffer ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
+  GLint object = GL_NONE, bits = 24, type = GL_UNSIGNED_NORMALIZED, stencil = 0;
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &object);
+  if (object != GL_NONE)
   {
-    GLint readFramebuffer = 0;
-    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
-    const GLenum attachment = readFramebuffer ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
     glGetFramebufferAttachmentParameteriv(
       GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
     glGetFramebufferAttachmentParameteriv(
@@ -829,13 +842,12 @@ void vtkAVSRayCaster::CaptureDepth(int x, int y, int width, int height)
     glGetFramebufferAttachmentParameteriv(
       GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &stencil);
   }
-  const int format = samples <= 0
-    ? -1
-    : (stencil > 0 ? -2
-                   : (type == GL_FLOAT ? vtkTextureObject::Float32
-                                       : (bits >= 32 ? vtkTextureObject::Fixed32
-                                                     : (bits >= 24 ? vtkTextureObject::Fixed24
-                                                                   : vtkTextureObject::Fixed16))));
+  const int format = stencil > 0
+    ? -2
+    : (type == GL_FLOAT
+          ? vtkTextureObject::Float32
+          : (bits >= 32 ? vtkTextureObject::Fixed32
+                        : (bits >= 24 ? vtkTextureObject::Fixed24 : vtkTextureObject::Fixed16)));
   if (!this->Depth || static_cast<int>(this->Depth->GetWidth()) != width ||
     static_cast<int>(this->Depth->GetHeight()) != height || format != this->DepthFormat)
   {
@@ -851,34 +863,33 @@ void vtkAVSRayCaster::CaptureDepth(int x, int y, int width, int height)
     }
     else
     {
-      this->Depth->AllocateDepth(width, height, format == -1 ? vtkTextureObject::Float32 : format);
+      this->Depth->AllocateDepth(width, height, format);
     }
     this->Depth->SetWrapS(vtkTextureObject::ClampToEdge);
     this->Depth->SetWrapT(vtkTextureObject::ClampToEdge);
     this->DepthFormat = format;
-  }
-  if (samples <= 0)
-  {
-    this->Depth->Activate();
-    this->Depth->CopyFromFrameBuffer(x, y, 0, 0, width, height);
-    this->Depth->Deactivate();
-    return;
   }
   if (!this->DepthFramebuffer)
   {
     this->DepthFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
     this->DepthFramebuffer->SetContext(this->Window);
   }
+  // The scissor box (the renderer's viewport) would clip the blit's destination.
+  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
   state->PushFramebufferBindings();
   this->DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
   this->DepthFramebuffer->AddDepthAttachment(this->Depth);
   this->DepthFramebuffer->ActivateDrawBuffers(0);
-  glBlitFramebuffer(
-    x, y, x + width, y + height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  const GLenum status = glGetError();
-  if (status != GL_NO_ERROR)
+  if (object != GL_NONE)
   {
-    // Unreadable: treat the depth as empty (no geometry) rather than leave garbage.
+    glBlitFramebuffer(
+      x, y, x + width, y + height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  }
+  const GLenum status = glGetError();
+  if (status != GL_NO_ERROR || object == GL_NONE)
+  {
+    // No depth, or unreadable: treat the depth as empty (no geometry) rather than leave garbage.
     vtkOpenGLState::ScopedglDepthMask depthMask(state);
     state->vtkglDepthMask(GL_TRUE);
     state->vtkglClearDepth(1.0);
@@ -887,10 +898,8 @@ void vtkAVSRayCaster::CaptureDepth(int x, int y, int width, int height)
   state->PopFramebufferBindings();
   if (status != GL_NO_ERROR && !this->DepthWarningGiven)
   {
-    vtkGenericWarningMacro("Could not read the depth of the multisampled framebuffer (GL error "
-      << status
-      << "): opaque geometry will not hide the volume. Set the render window's "
-         "MultiSamples to 0 to avoid this.");
+    vtkGenericWarningMacro("Could not copy the depth of the framebuffer (GL error "
+      << status << ", depth format not matched): opaque geometry will not hide the volume.");
     this->DepthWarningGiven = true;
   }
 }
@@ -909,11 +918,13 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     return false;
   }
   vtkOpenGLState* state = window->GetState();
-  int width, height, x, y;
-  renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  vtkAVSRenderPasses::DiscardErrors(); // what others left; the check at the end is of this pass
+  // The current viewport: the renderer's, or a render pass's in its own framebuffer.
+  const vtkAVSRenderPasses::Region region = vtkAVSRenderPasses::Locate(window, renderer);
+  const int x = region.Draw[0], y = region.Draw[1], width = region.Draw[2], height = region.Draw[3];
 
   // Copy the depth of what was drawn before, to end rays at opaque geometry.
-  this->CaptureDepth(x, y, width, height);
+  this->CaptureDepth(region.ReadOrigin[0], region.ReadOrigin[1], width, height);
   this->Depth->Activate();
 
   window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
@@ -1041,18 +1052,16 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     program->SetUniformf("u_ambientRadius", static_cast<float>(p.AmbientRadius));
   }
 
+  // The render passes attached to the volume set what they need (vtkSSAOPass: the colour
+  // target alone).
+  vtkAVSRenderPasses::SetShaderParameters(frame.Prop, frame.Mapper, program);
+
   // Composite the premultiplied result over the framebuffer; leave depth untouched.
   {
-    vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglDepthMask depthMask(state);
-    vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
+    vtkAVSRenderPasses::ScopedCompositing compositing(state);
     vtkOpenGLState::ScopedglViewport viewportGuard(state);
-    state->vtkglEnable(GL_BLEND);
-    state->vtkglDisable(GL_DEPTH_TEST);
-    state->vtkglDepthMask(GL_FALSE);
-    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     state->vtkglViewport(x, y, width, height);
+    vtkAVSRenderPasses::ScopedDrawBuffer target(state, frame.PeelingFront ? 1 : 0);
     this->Quad->Render();
   }
 
@@ -1070,6 +1079,10 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
       t->Deactivate();
     }
   }
-  vtkOpenGLCheckErrorMacro("failed after rendering the volume");
+  if (const GLenum status = glGetError())
+  {
+    error = "OpenGL error " + std::to_string(status) + " while drawing the volume";
+    return false;
+  }
   return true;
 }

@@ -22,10 +22,12 @@
 #include <string>
 #include <vector>
 
+class vtkAbstractMapper;
 class vtkMatrix4x4;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkProp;
 class vtkRenderer;
 class vtkTextureObject;
 class vtkWindow;
@@ -116,10 +118,16 @@ public:
     double UnitDistance = 1.0;
     std::vector<avs::Light> Lights; ///< world space
     bool Jitter = true;
+    /// The volume and its mapper, for the render passes attached to the volume (SSAO's draw
+    /// buffers); with PeelingFront the volume goes into vtkDualDepthPeelingPass's front target
+    /// (vtkAVSRenderPasses).
+    vtkProp* Prop = nullptr;
+    vtkAbstractMapper* Mapper = nullptr;
+    bool PeelingFront = false;
   };
 
-  /// Draws the volume into the renderer's viewport. Returns false (and draws nothing) when the
-  /// program cannot be built.
+  /// Draws the volume into the current viewport (the renderer's, or a render pass's). Returns
+  /// false when the program cannot be built (nothing drawn) or OpenGL reported an error.
   bool Render(vtkRenderer* renderer, const Frame& frame, std::string& error);
 
 private:
@@ -141,7 +149,8 @@ private:
   /// The first `count` packed light-volume textures on the light grid `dimensions`, allocated
   /// (filled with ones) where missing or of another size.
   bool EnsureLightTextures(const std::array<int, 3>& dimensions, int count, std::string& error);
-  /// Copies the depth of the viewport into Depth (multisampled framebuffers are resolved).
+  /// Copies the depth of the read framebuffer's rectangle at (x, y) into Depth, by a blit into a
+  /// texture of the same depth format (multisampled framebuffers are resolved).
   void CaptureDepth(int x, int y, int width, int height);
   unsigned int BuildComputeProgram(const char* source, const char* what);
 

@@ -20,37 +20,12 @@
 #include "vtkVolumeProperty.h"
 #include "vtkWindowToImageFilter.h"
 
-#include <X11/Xlib.h>
-
-#include <chrono>
 #include <cmath>
 #include <limits>
-#include <thread>
 
-/// One X connection for all the windows of a test process, opened with retries: Xvfb refuses
-/// connections with EAGAIN when they arrive in bursts (its listen backlog overflows), and VTK
-/// aborts the process when a window cannot connect. Windows given this display do not close it.
-inline void* SharedDisplay()
-{
-  static Display* display = nullptr;
-  for (int attempt = 0; !display && attempt < 50; ++attempt)
-  {
-    display = XOpenDisplay(nullptr);
-    if (!display)
-    {
-      std::this_thread::sleep_for(std::chrono::milliseconds(20 * (attempt + 1)));
-    }
-  }
-  return display;
-}
-
-/// A window for the tests: off screen, no multisampling unless asked, on the shared display.
+/// A window for the tests: off screen, no multisampling unless asked.
 inline void PrepareTestWindow(vtkRenderWindow* window, int width, int height)
 {
-  if (void* display = SharedDisplay())
-  {
-    window->SetDisplayId(display);
-  }
   window->SetSize(width, height);
   window->SetMultiSamples(0);
   window->OffScreenRenderingOn();

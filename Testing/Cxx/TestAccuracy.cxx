@@ -58,7 +58,6 @@ void ExpectBetter(std::map<std::string, AccuracyResult>& results,
 
 int main(int, char*[])
 {
-  SharedDisplay(); // one X connection, with retries
   AccuracySettings settings;
   settings.ImageSize = 48;
   settings.Voxels = 48;
