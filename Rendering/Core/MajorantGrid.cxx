@@ -34,7 +34,8 @@ double MaximumExtinction(const TransferFunction& tf, double unitDistance, double
 MajorantGrid::MajorantGrid(const Grid& scalars,
   const TransferFunction& tf,
   double unitDistance,
-  int cellSize)
+  int cellSize,
+  const ClipRegion* clip)
   : Size(std::max(1, cellSize))
 {
   const auto& d = scalars.Geometry.Dimensions;
@@ -58,7 +59,15 @@ MajorantGrid::MajorantGrid(const Grid& scalars,
               lo = std::min(lo, s);
               hi = std::max(hi, s);
             }
-        const double m = MaximumExtinction(tf, unitDistance, lo, hi);
+        double m = MaximumExtinction(tf, unitDistance, lo, hi);
+        const Vec3 low{ static_cast<double>(ci * this->Size),
+          static_cast<double>(cj * this->Size),
+          static_cast<double>(ck * this->Size) };
+        if (clip && clip->Clips() &&
+          clip->BoxOutside(low, low + Vec3{ 1.0, 1.0, 1.0 } * static_cast<double>(this->Size)))
+        {
+          m = 0.0; // nothing of the cell is there
+        }
         this->Values[(static_cast<std::size_t>(ck) * this->Count[1] + cj) * this->Count[0] + ci] =
           m;
         this->Largest = std::max(this->Largest, m);

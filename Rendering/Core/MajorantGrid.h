@@ -7,6 +7,7 @@
 #ifndef avs_MajorantGrid_h
 #define avs_MajorantGrid_h
 
+#include "ClipRegion.h"
 #include "Grid.h"
 #include "TransferFunction.h"
 
@@ -20,8 +21,13 @@ class MajorantGrid
 {
 public:
   /// Majorants of sigma_t for `scalars` with `tf` and unit distance `u`, cells of `cellSize`
-  /// voxels per axis (cellSize >= the whole grid gives one global majorant).
-  MajorantGrid(const Grid& scalars, const TransferFunction& tf, double unitDistance, int cellSize);
+  /// voxels per axis (cellSize >= the whole grid gives one global majorant). Cells wholly
+  /// outside `clip` (when given) get 0.
+  MajorantGrid(const Grid& scalars,
+    const TransferFunction& tf,
+    double unitDistance,
+    int cellSize,
+    const ClipRegion* clip = nullptr);
 
   int CellSize() const { return this->Size; }
   const std::array<int, 3>& Cells() const { return this->Count; }

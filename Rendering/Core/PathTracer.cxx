@@ -34,6 +34,11 @@ double VolumeTracker::Extinction(const Vec3& world, Vec3* color) const
   {
     *color = this->Scene.Transfer.ColorAt(s);
   }
+  if (this->Scene.Clip.Clips() &&
+    !this->Scene.Clip.IsInside(this->Scene.Scalars.Geometry.WorldToIndex(world)))
+  {
+    return 0.0; // clipped or cropped away
+  }
   return OpacityToExtinction(this->Scene.Transfer.OpacityAt(s), this->Scene.UnitDistance);
 }
 
@@ -256,7 +261,7 @@ Image RenderPathTraced(const VolumeScene& scene,
     return image;
   }
   const MajorantGrid majorants(
-    scene.Scalars, scene.Transfer, scene.UnitDistance, settings.MajorantCellSize);
+    scene.Scalars, scene.Transfer, scene.UnitDistance, settings.MajorantCellSize, &scene.Clip);
   const VolumeTracker tracker(scene, majorants);
   const PathContext context{ scene, p, settings, tracker };
   std::vector<double> sum(4 * static_cast<std::size_t>(image.Width) * image.Height, 0.0);

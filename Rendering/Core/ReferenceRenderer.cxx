@@ -30,6 +30,7 @@ Grid ExtinctionGrid(const VolumeScene& scene)
     out.Values[i] = static_cast<float>(
       OpacityToExtinction(scene.Transfer.OpacityAt(scene.Scalars.Values[i]), scene.UnitDistance));
   }
+  ClearOutside(scene.Clip, out);
   return out;
 }
 
@@ -133,6 +134,15 @@ void CastRay(const VolumeScene& scene,
     return;
   }
   t0 = std::max(t0, 0.0); // camera inside the volume
+  // Clipping planes and the kept cropping regions' box shorten the ray (as on the GPU).
+  const Vec3& spacing = geometry.Spacing;
+  auto toIndex = [&](const Vec3& local) {
+    return Vec3{ local.x / spacing.x, local.y / spacing.y, local.z / spacing.z };
+  };
+  if (scene.Clip.Clips() && !scene.Clip.ClipRay(toIndex(o), toIndex(d), t0, t1))
+  {
+    return;
+  }
   const int n = std::max(1, static_cast<int>(std::ceil((t1 - t0) / p.SampleDistance - 1e-9)));
   const double dt = (t1 - t0) / n;
   // Ambient scattering's look-ahead r = (lag + fraction) steps.
@@ -152,6 +162,10 @@ void CastRay(const VolumeScene& scene,
     }
     sigmaT = OpacityToExtinction(scene.Transfer.OpacityAt(s), scene.UnitDistance);
     color = scene.Transfer.ColorAt(s);
+    if (scene.Clip.Clips() && !scene.Clip.IsInside(toIndex(x)))
+    {
+      sigmaT = 0.0; // clipped or cropped away
+    }
   };
   // Ambient in-scattering from the ball around the sample x (eqs. 8.8-8.9), per unit of the
   // transmittance and of the ray's length.

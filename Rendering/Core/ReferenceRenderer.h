@@ -5,6 +5,7 @@
 #define avs_ReferenceRenderer_h
 
 #include "Camera.h"
+#include "ClipRegion.h"
 #include "Grid.h"
 #include "Lights.h"
 #include "ScatteringParameters.h"
@@ -20,7 +21,8 @@ namespace avs
 {
 
 /// What the renderers draw: point scalars on a grid, the transfer functions, the unit distance of
-/// the opacity, the lights, and the background behind the volume.
+/// the opacity, the lights, the background behind the volume, and which part of the volume is
+/// there (clipping planes and cropping, ClipRegion.h).
 struct VolumeScene
 {
   Grid Scalars;
@@ -28,6 +30,7 @@ struct VolumeScene
   double UnitDistance = 1.0;
   std::vector<Light> Lights;
   Vec3 Background{ 0, 0, 0 };
+  ClipRegion Clip; ///< in the index frame of Scalars; material outside is absent
 };
 
 /// RGBA float image, row 0 at the bottom (VTK's convention). RGB is the radiance L the volume
@@ -61,7 +64,8 @@ struct PrecomputedVolumes
   ScatteringSlice Slice;          ///< A and F for the current g and albedo
 };
 
-/// sigma_t at every voxel from the scalars and the opacity transfer function.
+/// sigma_t at every voxel from the scalars and the opacity transfer function (0 outside the
+/// scene's clip region).
 Grid ExtinctionGrid(const VolumeScene& scene);
 
 /// Computes what `mode` needs (the table is needed for ambient scattering). Returns false and
