@@ -6,17 +6,21 @@
 #include "ReferenceRenderer.h"
 #include "ScatteringParameters.h"
 #include "ScatteringTable.h"
+#include "vtkAVSClipTranslator.h"
 #include "vtkAVSRayCaster.h"
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSSceneTranslator.h"
+#include "vtkAVSShaderOptions.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkCamera.h"
+#include "vtkContourValues.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
@@ -85,6 +89,10 @@ struct vtkAVSVolumeMapper::Internals
   double OcclusionRadius = -1.0;
   int OcclusionDirections = -1;
   bool OcclusionUploaded = false;
+
+  // Clipping planes and cropping in the index frame; a change bumps OpacityVersion, since
+  // sigma_t depends on it (everything built from sigma_t is rebuilt).
+  avs::ClipRegion Clip;
 
   vtkNew<vtkMatrix4x4> WorldToIndex;
   avs::ScatteringParameters Parameters;
@@ -240,6 +248,27 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   worldToData->DeepCopy(dataToWorld);
   worldToData->Invert();
 
+  // Clipping planes (world) and cropping (data coordinates) in the index frame.
+  avs::ClipRegion clip;
+  if (!vtkAVSClipTranslator::ToClipRegion(this->ClippingPlanes,
+        this->Cropping != 0,
+        this->CroppingRegionPlanes,
+        this->CroppingRegionFlags,
+        input,
+        g,
+        dataToWorld,
+        clip,
+        error))
+  {
+    vtkErrorMacro("Cannot render: " << error);
+    return false;
+  }
+  if (clip != in.Clip)
+  {
+    in.Clip = clip;
+    ++in.OpacityVersion;
+  }
+
   // Lights in world space, at most 8.
   in.WorldLights =
     vtkAVSSceneTranslator::ToLights(renderer, renderer->GetActiveCamera(), rp.LightScale);
@@ -295,6 +324,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     scene.UnitDistance = in.UnitDistance;
     scene.Scalars.Geometry = g;
     scene.Scalars.Values = in.Scalars.Values;
+    scene.Clip = in.Clip;
     in.Extinction = avs::ExtinctionGrid(scene);
     in.ExtinctionKey[0] = in.DataVersion;
     in.ExtinctionKey[1] = in.OpacityVersion;
@@ -377,6 +407,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
             lightGrid.Dimensions,
             in.UnitDistance,
             avs::AveragingHalfWidths(rp.AmbientRadius, g.Spacing),
+            in.Clip,
             error))
       {
         vtkErrorMacro("Cannot render: " << error);
@@ -496,10 +527,45 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     in.SliceTable = nullptr;
     in.AveragedRadius = -1.0;
   }
+  // Blend modes: emission-absorption renders VTK's (but slice), the lit mappers composite only.
+  const bool lit = this->GetEffect() != 0;
+  if (lit ? this->BlendMode != vtkVolumeMapper::COMPOSITE_BLEND
+          : !vtkAVSShaderOptions::IsSupportedBlend(this->BlendMode))
+  {
+    vtkErrorMacro(
+      "Cannot render: " << this->GetClassName() << " does not render the "
+                        << vtkAVSShaderOptions::BlendModeName(this->BlendMode)
+                        << " blend mode (BlendMode " << this->BlendMode << "); "
+                        << (lit ? "it renders the composite blend mode only"
+                                : "vtkEmissionAbsorptionVolumeMapper renders composite, "
+                                  "maximum, minimum and average intensity, additive "
+                                  "and isosurface"));
+    return;
+  }
+  vtkAVSShaderOptions::Blend blend;
+  blend.Mode = this->BlendMode;
+  if (blend.Mode == vtkVolumeMapper::ISOSURFACE_BLEND)
+  {
+    vtkContourValues* contours =
+      volume->GetProperty() ? volume->GetProperty()->GetIsoSurfaceValues() : nullptr;
+    for (int c = 0; contours && c < contours->GetNumberOfContours(); ++c)
+    {
+      blend.IsoValues.push_back(contours->GetValue(c));
+    }
+    if (blend.IsoValues.empty())
+    {
+      return; // as vtkGPUVolumeRayCastMapper: no contour, nothing to draw
+    }
+    std::sort(blend.IsoValues.begin(), blend.IsoValues.end());
+  }
   if (!this->Prepare(renderer, volume))
   {
     return;
   }
+  blend.ScalarRange[0] = in.Transfer.Minimum;
+  blend.ScalarRange[1] = in.Transfer.Maximum;
+  blend.AverageRange[0] = std::min(this->AverageIPScalarRange[0], this->AverageIPScalarRange[1]);
+  blend.AverageRange[1] = std::max(this->AverageIPScalarRange[0], this->AverageIPScalarRange[1]);
   vtkAVSRayCaster::Frame frame;
   frame.Mode = this->GetEffect() == 0
     ? avs::RenderMode::EmissionAbsorption
@@ -508,6 +574,9 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.Parameters = in.Parameters;
   frame.WorldToIndex = in.WorldToIndex;
   frame.Dimensions = in.Scalars.Geometry.Dimensions;
+  frame.Spacing = in.Scalars.Geometry.Spacing;
+  frame.Clip = in.Clip;
+  frame.Blend = blend;
   frame.LightVolumeDimensions = in.LightGridDimensions;
   frame.OcclusionDimensions = in.OcclusionDimensions;
   frame.UnitDistance = in.UnitDistance;
@@ -535,6 +604,20 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PrecomputeOnGPU: " << (this->PrecomputeOnGPU ? "On" : "Off") << "\n";
   os << indent << "LightVolumesOnGPU: " << (this->LightVolumesOnGPU ? "yes" : "no") << "\n";
   os << indent << "OcclusionOnGPU: " << (this->OcclusionOnGPU ? "yes" : "no") << "\n";
+  // What of vtkVolumeMapper's settings (printed above) this mapper honours.
+  const int planes = this->ClippingPlanes ? this->ClippingPlanes->GetNumberOfItems() : 0;
+  os << indent << "ClippingPlanes honoured: " << planes << " plane(s), at most "
+     << avs::ClipRegion::MaximumNumberOfPlanes << "\n";
+  os << indent << "Cropping honoured: " << (this->Cropping ? "On" : "Off") << ", flags 0x"
+     << std::hex << this->CroppingRegionFlags << std::dec << "\n";
+  const bool blendHonoured = this->GetEffect() == 0
+    ? vtkAVSShaderOptions::IsSupportedBlend(this->BlendMode)
+    : this->BlendMode == vtkVolumeMapper::COMPOSITE_BLEND;
+  os << indent << "BlendMode: " << vtkAVSShaderOptions::BlendModeName(this->BlendMode)
+     << (blendHonoured
+            ? " (honoured)"
+            : " (not honoured by this mapper: rendering reports an error, draws nothing)")
+     << "\n";
   os << indent << "NumberOfDataUploads: " << this->NumberOfDataUploads << "\n";
   os << indent << "NumberOfExtinctionRebuilds: " << this->NumberOfExtinctionRebuilds << "\n";
   os << indent << "NumberOfLightVolumeRebuilds: " << this->NumberOfLightVolumeRebuilds << "\n";

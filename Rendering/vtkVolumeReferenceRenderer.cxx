@@ -2,6 +2,7 @@
 
 #include "PathTracer.h"
 #include "ReferenceRenderer.h"
+#include "vtkAVSClipTranslator.h"
 #include "vtkAVSSceneTranslator.h"
 #include "vtkAmbientScatteringTable.h"
 
@@ -15,6 +16,8 @@
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
 #include "vtkRenderer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -29,6 +32,7 @@ vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, VolumeProperty, vtkVolumeProper
 vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, Renderer, vtkRenderer);
 vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, Camera, vtkCamera);
 vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, ScatteringTable, vtkAmbientScatteringTable);
+vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, ClippingPlanes, vtkPlaneCollection);
 
 vtkVolumeReferenceRenderer::vtkVolumeReferenceRenderer()
 {
@@ -42,6 +46,7 @@ vtkVolumeReferenceRenderer::~vtkVolumeReferenceRenderer()
   this->SetRenderer(nullptr);
   this->SetCamera(nullptr);
   this->SetScatteringTable(nullptr);
+  this->SetClippingPlanes(nullptr);
 }
 
 const char* vtkVolumeReferenceRenderer::GetRenderModeAsString()
@@ -73,6 +78,16 @@ vtkMTimeType vtkVolumeReferenceRenderer::GetMTime()
   if (this->ScatteringTable)
   {
     t = std::max(t, this->ScatteringTable->GetMTime());
+  }
+  if (this->ClippingPlanes)
+  {
+    t = std::max(t, this->ClippingPlanes->GetMTime());
+    vtkCollectionSimpleIterator it;
+    this->ClippingPlanes->InitTraversal(it);
+    while (vtkPlane* plane = this->ClippingPlanes->GetNextPlane(it))
+    {
+      t = std::max(t, plane->GetMTime());
+    }
   }
   if (this->Renderer)
   {
@@ -147,6 +162,19 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
   if (!this->VolumeProperty)
   {
     vtkErrorMacro("Cannot render: no volume property set.");
+    return 1;
+  }
+  if (!vtkAVSClipTranslator::ToClipRegion(this->ClippingPlanes,
+        this->Cropping != 0,
+        this->CroppingRegionPlanes,
+        this->CroppingRegionFlags,
+        input,
+        scene.Scalars.Geometry,
+        nullptr,
+        scene.Clip,
+        error))
+  {
+    vtkErrorMacro("Cannot render: " << error);
     return 1;
   }
   double range[2];
@@ -315,6 +343,16 @@ void vtkVolumeReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TerminationTransmittance: " << this->TerminationTransmittance << "\n";
   os << indent << "LightVolumeMaximumDimension: " << this->LightVolumeMaximumDimension << "\n";
   os << indent << "OcclusionVolumeMaximumDimension: " << this->OcclusionVolumeMaximumDimension
+     << "\n";
+  os << indent
+     << "ClippingPlanes: " << (this->ClippingPlanes ? this->ClippingPlanes->GetNumberOfItems() : 0)
+     << "\n";
+  os << indent << "Cropping: " << (this->Cropping ? "On" : "Off") << "\n";
+  os << indent << "CroppingRegionPlanes: (" << this->CroppingRegionPlanes[0] << ", "
+     << this->CroppingRegionPlanes[1] << ", " << this->CroppingRegionPlanes[2] << ", "
+     << this->CroppingRegionPlanes[3] << ", " << this->CroppingRegionPlanes[4] << ", "
+     << this->CroppingRegionPlanes[5] << ")\n";
+  os << indent << "CroppingRegionFlags: 0x" << std::hex << this->CroppingRegionFlags << std::dec
      << "\n";
   os << indent << "SamplesPerPixel: " << this->SamplesPerPixel << "\n";
   os << indent << "Seed: " << this->Seed << "\n";

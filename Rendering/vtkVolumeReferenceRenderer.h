@@ -14,8 +14,11 @@
  * composited over Background) and a 4-component float array "Radiance" (premultiplied radiance
  * and alpha = 1 - transmittance).
  *
+ * Clipping planes and cropping (as a vtkVolumeMapper's) remove material for every purpose.
+ *
  * Bad input (no or empty image, no scalars, more than one component, NaN or infinite values,
- * bad spacing, no volume property, a missing or corrupt scattering table) gives a vtkErrorMacro
+ * bad spacing, no volume property, a missing or corrupt scattering table, more than 8 or
+ * degenerate clipping planes) gives a vtkErrorMacro
  * and an empty output. Progress events are fired during the precomputation and the rendering.
  */
 #ifndef vtkVolumeReferenceRenderer_h
@@ -34,6 +37,7 @@ struct Image;
 struct Vec3;
 }
 class vtkCamera;
+class vtkPlaneCollection;
 class vtkRenderer;
 class vtkVolumeProperty;
 
@@ -234,8 +238,35 @@ public:
   vtkGetMacro(Seed, int);
   ///@}
 
+  ///@{
   /**
-   * Includes the property's, the camera's, the renderer's and the lights' modification times.
+   * Clipping planes in world coordinates (the volume is not transformed here: world = data), as
+   * vtkAbstractMapper::ClippingPlanes: material where dot(normal, x - origin) < 0 for a plane is
+   * absent for every purpose (rays, averaged extinction, light volumes, AO, path tracer). At
+   * most 8. Default none.
+   */
+  void SetClippingPlanes(vtkPlaneCollection* planes);
+  vtkGetObjectMacro(ClippingPlanes, vtkPlaneCollection);
+  ///@}
+
+  ///@{
+  /**
+   * Cropping as vtkVolumeMapper's: region planes (xmin, xmax, ymin, ymax, zmin, zmax) in data
+   * coordinates, origin + index x spacing along the image's axes, and the 27 region flags
+   * (vtkVolumeMapper's presets: VTK_CROP_SUBVOLUME and so on). Default off, sub-volume.
+   */
+  vtkSetMacro(Cropping, vtkTypeBool);
+  vtkGetMacro(Cropping, vtkTypeBool);
+  vtkBooleanMacro(Cropping, vtkTypeBool);
+  vtkSetVector6Macro(CroppingRegionPlanes, double);
+  vtkGetVector6Macro(CroppingRegionPlanes, double);
+  vtkSetClampMacro(CroppingRegionFlags, int, 0x0, 0x7ffffff);
+  vtkGetMacro(CroppingRegionFlags, int);
+  ///@}
+
+  /**
+   * Includes the property's, the camera's, the renderer's, the lights' and the clipping
+   * planes' modification times.
    */
   vtkMTimeType GetMTime() override;
 
@@ -270,6 +301,10 @@ protected:
   int OcclusionVolumeMaximumDimension = 128;
   int SamplesPerPixel = 64;
   int Seed = 1;
+  vtkPlaneCollection* ClippingPlanes = nullptr;
+  vtkTypeBool Cropping = 0;
+  double CroppingRegionPlanes[6] = { 0, 1, 0, 1, 0, 1 };
+  int CroppingRegionFlags = 0x0002000;
 
 private:
   void WriteOutput(vtkImageData* output, const avs::Image& image, const avs::Vec3& background);

@@ -489,14 +489,17 @@ bool vtkAVSRayCaster::EnsureProgram(avs::RenderMode mode, const std::string& def
     this->Quad.reset();
   }
   std::string fs = avs_raycast_fs;
+  // Emission-absorption with a blend mode other than composite (vtkAVSShaderOptions).
+  const bool blend = defines.find("#define AVS_BLEND ") != std::string::npos;
   std::string effect = mode == avs::RenderMode::EmissionAbsorption
-    ? avs_ea_effect
+    ? (blend ? avs_blend_effect : avs_ea_effect)
     : (mode == avs::RenderMode::AmbientOcclusion ? avs_ao_effect : avs_as_effect);
   std::string dec, init, sample;
   SplitEffect(effect, dec, init, sample);
   // The compile-time choices go before the first snippet that may test them.
   Replace(fs, "//AVS::Classify::Dec", avs_classify);
   Replace(fs, "//AVS::Lights::Dec", defines + avs_lights);
+  Replace(fs, "//AVS::Clip::Dec", avs_clip);
   Replace(fs, "//AVS::Effect::Dec", dec);
   Replace(fs, "//AVS::Effect::Init", init);
   Replace(fs, "//AVS::Effect::Sample", sample);
@@ -539,6 +542,7 @@ bool vtkAVSRayCaster::SupportsComputeShaders()
   this->OcclusionProgram = this->BuildComputeProgram(avs_occlusion_cs, "ambient-occlusion");
   std::string average = avs_average_cs;
   Replace(average, "//AVS::Classify::Dec", avs_classify);
+  Replace(average, "//AVS::Clip::Dec", avs_clip);
   this->AverageProgram = this->BuildComputeProgram(average.c_str(), "averaged-extinction");
   this->ComputeSupport =
     this->ComputeProgram && this->OcclusionProgram && this->AverageProgram ? 1 : 0;
@@ -580,6 +584,7 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
   const std::array<int, 3>& lightDimensions,
   double unitDistance,
   const std::array<int, 3>& halfWidths,
+  const avs::ClipRegion& clip,
   std::string& error)
 {
   if (!this->SupportsComputeShaders() || !this->Scalars || !this->Transfer)
@@ -622,6 +627,7 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
   glUniform2f(location("u_scalarRange"), this->ScalarRange[0], this->ScalarRange[1]);
   glUniform1f(location("u_transferSize"), this->TransferSize);
   glUniform1f(location("u_unitDistance"), static_cast<float>(unitDistance));
+  vtkAVSShaderOptions::SetClipUniforms(program, clip);
   glBindImageTexture(2, this->ScalarsAveraged->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
   for (int pass = 0; pass < 4; ++pass)
   {
@@ -912,7 +918,11 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     error = "nothing uploaded";
     return false;
   }
-  if (!this->EnsureProgram(frame.Mode, ProgramDefines(frame, static_cast<int>(this->TableSize[1]))))
+  const bool blend = frame.Mode == avs::RenderMode::EmissionAbsorption;
+  if (!this->EnsureProgram(frame.Mode,
+        ProgramDefines(frame, static_cast<int>(this->TableSize[1])) +
+          vtkAVSShaderOptions::ClipDefines(frame.Clip) +
+          (blend ? vtkAVSShaderOptions::BlendDefines(frame.Blend) : std::string())))
   {
     error = "the ray-casting shader did not compile or link (see the log above)";
     return false;
@@ -955,6 +965,15 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     static_cast<float>(frame.Dimensions[1]),
     static_cast<float>(frame.Dimensions[2]) };
   program->SetUniform3f("u_dimensions", dims);
+  const float spacing[3] = { static_cast<float>(frame.Spacing.x),
+    static_cast<float>(frame.Spacing.y),
+    static_cast<float>(frame.Spacing.z) };
+  program->SetUniform3f("u_spacing", spacing);
+  vtkAVSShaderOptions::SetClipUniforms(program, frame.Clip);
+  if (blend)
+  {
+    vtkAVSShaderOptions::SetBlendUniforms(program, frame.Blend);
+  }
   program->SetUniformi("u_depth", this->Depth->GetTextureUnit());
   this->Scalars->Activate();
   program->SetUniformi("u_scalars", this->Scalars->GetTextureUnit());

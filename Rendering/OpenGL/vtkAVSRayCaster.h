@@ -10,11 +10,13 @@
 #ifndef vtkAVSRayCaster_h
 #define vtkAVSRayCaster_h
 
+#include "ClipRegion.h"
 #include "Grid.h"
 #include "Lights.h"
 #include "ScatteringParameters.h"
 #include "ScatteringTable.h"
 #include "TransferFunction.h"
+#include "vtkAVSShaderOptions.h"
 
 #include "vtkSmartPointer.h"
 
@@ -87,10 +89,12 @@ public:
   /// widths, each axis interpolated onto the light grid `lightDimensions` as it is summed) into
   /// the averaged texture (light grid), then interpolated back at the voxels beside the scalars
   /// into the ray caster's two-channel volume texture.
+  /// sigma_t is 0 outside `clip` (in the data's index frame).
   bool ComputeAveragedExtinction(const std::array<int, 3>& dimensions,
     const std::array<int, 3>& lightDimensions,
     double unitDistance,
     const std::array<int, 3>& halfWidths,
+    const avs::ClipRegion& clip,
     std::string& error);
 
   /// Whether the context runs compute shaders (OpenGL 4.3), for the GPU precomputation.
@@ -113,6 +117,9 @@ public:
     avs::ScatteringParameters Parameters; ///< resolved
     vtkMatrix4x4* WorldToIndex = nullptr; ///< row-major, VTK convention
     std::array<int, 3> Dimensions{ 1, 1, 1 };
+    avs::Vec3 Spacing{ 1, 1, 1 };     ///< data units per index step (the grid's spacing)
+    avs::ClipRegion Clip;             ///< clipping planes and cropping, index frame
+    vtkAVSShaderOptions::Blend Blend; ///< emission-absorption only
     std::array<int, 3> LightVolumeDimensions{ 1, 1, 1 };
     std::array<int, 3> OcclusionDimensions{ 1, 1, 1 };
     double UnitDistance = 1.0;

@@ -190,10 +190,11 @@ bool EffectContinues(float T, int i)
       // back: T = 1 r before them.
       for (int j = 0; j <= g_lag && j < steps; ++j)
       {
-        float tj = t + float(j) * dt;
+        float tj = t + float(j) * dtWorld;
         vec3 first = io + tj * id;
         vec4 firstVoxel = textureLod(u_scalarsAveraged, (first + 0.5) / u_dimensions, 0.0);
         vec4 s1 = Classify(firstVoxel.r);
+        AVS_CROP(s1, first);
         if (s1.a > 0.0)
         {
           L += dt * InScattered(first, origin + tj * direction, direction, s1, firstVoxel.g);
@@ -204,10 +205,11 @@ bool EffectContinues(float T, int i)
     {
       // The sample k + 1 steps on, weighted by T interpolated r before it.
       float lagged = T * mix(extinction, 1.0, g_lagFraction);
-      float ta = t + float(g_lag + 1) * dt;
+      float ta = t + float(g_lag + 1) * dtWorld;
       vec3 ahead = io + ta * id;
       vec4 aheadVoxel = textureLod(u_scalarsAveraged, (ahead + 0.5) / u_dimensions, 0.0);
       vec4 s2 = Classify(aheadVoxel.r);
+      AVS_CROP(s2, ahead);
       if (s2.a > 0.0)
       {
         L += lagged * dt * InScattered(ahead, origin + ta * direction, direction, s2, aheadVoxel.g);

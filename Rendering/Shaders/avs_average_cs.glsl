@@ -26,8 +26,10 @@ uniform float u_inverseCount; // 1 / prod(2 k_a + 1), applied in the last pass
 uniform sampler3D u_scalars;  // passes 0 and 4
 uniform sampler3D u_averaged; // pass 4: the result of pass 3, on the target grid
 uniform vec3 u_target;        // pass 4: the target grid's dimensions
-// Pass 0: Classify(s), the ray caster's classification (avs_classify.glsl).
+// Pass 0: Classify(s), the ray caster's classification (avs_classify.glsl), and 0 outside
+// the clipping planes and cropping (avs_clip.glsl).
 //AVS::Classify::Dec
+//AVS::Clip::Dec
 
 void Store(ivec3 v, double sum)
 {
@@ -47,7 +49,7 @@ void main()
     for (int z = 0; z < u_dimensions.z; ++z)
     {
       ivec3 v = ivec3(xy, z);
-      imageStore(u_output, v, vec4(Classify(texelFetch(u_scalars, v, 0).r).a));
+      imageStore(u_output, v, vec4(Classify(texelFetch(u_scalars, v, 0).r).a * ClipInside(vec3(v), true)));
     }
     return;
   }

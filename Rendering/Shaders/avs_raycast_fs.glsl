@@ -5,8 +5,16 @@
 // in equal steps, with the mapper's effect snippet (declarations, per-ray set-up and per-sample
 // code) put in at the three effect markers below. An effect may define AVS_EFFECT_VOLUME (a
 // sampler3D with the scalar in .r, fetched once per sample instead of u_scalars) and
-// AVS_EFFECT_TERMINATION (then its bool EffectContinues(float T, int i) ends the ray). The CPU
-// reference (Rendering/Core/ReferenceRenderer.cxx) computes the same sums in double precision.
+// AVS_EFFECT_TERMINATION (then its bool EffectContinues(float T, int i) ends the ray),
+// AVS_EFFECT_KEEPS_TRANSMITTANCE (then it updates T itself, as the blend modes other than
+// composite do) and AVS_EFFECT_OUTPUT (then vec4 EffectOutput(vec3 L, float T) gives the
+// premultiplied pixel). The CPU reference (Rendering/Core/ReferenceRenderer.cxx) computes the
+// same sums in double precision.
+//
+// Distances: t runs along the world ray (positions, depth); the integration step dt is in data
+// units, the vtkVolume's coordinates before its matrix (u_spacing turns an index step into
+// them), as vtkGPUVolumeRayCastMapper integrates opacity: a scaled vtkVolume renders as the
+// unscaled one magnified. Sample distance, unit distance and ambient radius are data units.
 
 //VTK::Output::Dec
 
@@ -17,7 +25,8 @@ uniform mat4 u_worldToIndex; // world -> continuous voxel index of the data
 uniform sampler2D u_depth;   // depth of what the renderer drew before
 uniform sampler3D u_scalars; // point scalars, component 0
 uniform vec3 u_dimensions;   // voxels per axis
-uniform float u_sampleDistance; // world units
+uniform vec3 u_spacing;      // data units per index step, per axis
+uniform float u_sampleDistance; // data units
 uniform float u_termination;    // stop when T falls below
 uniform int u_jitter;           // 1: jitter the first sample per pixel
 
@@ -35,6 +44,9 @@ float HenyeyGreenstein(float mu, float g)
 }
 
 //AVS::Lights::Dec
+
+// ClipRay, ClipInside, AVS_CROP: clipping planes and cropping (avs_clip.glsl).
+//AVS::Clip::Dec
 
 //AVS::Effect::Dec
 
@@ -68,18 +80,28 @@ void main()
     vec4 p = u_ndcToWorld * vec4(ndc, 2.0 * depth - 1.0, 1.0);
     t1 = min(t1, dot(p.xyz / p.w - origin, direction));
   }
+#ifdef AVS_CLIPPING
+  // Clipping planes and the box of the kept cropping regions shorten the ray.
+  if (!ClipRay(io, id, t0, t1))
+  {
+    discard;
+  }
+#endif
   if (!(t1 > t0))
   {
     discard;
   }
-  int steps = max(1, int(ceil((t1 - t0) / u_sampleDistance - 1e-4)));
-  float dt = (t1 - t0) / float(steps);
+  // Steps of at most the sample distance in data units; dtWorld along the world ray.
+  float dataPerWorld = length(id * u_spacing);
+  int steps = max(1, int(ceil((t1 - t0) * dataPerWorld / u_sampleDistance - 1e-4)));
+  float dtWorld = (t1 - t0) / float(steps);
+  float dt = dtWorld * dataPerWorld;
   float offset = u_jitter == 1 ? Hash(gl_FragCoord.xy) : 0.5;
   // Per-ray constants: the volume texture coordinate of sample i is first + i * step (texel
   // centres on the voxels), and the transfer-function coordinates are affine in the scalar.
   vec3 inverseDimensions = 1.0 / u_dimensions;
-  vec3 firstCoordinate = (io + (t0 + offset * dt) * id + 0.5) * inverseDimensions;
-  vec3 stepCoordinate = dt * id * inverseDimensions;
+  vec3 firstCoordinate = (io + (t0 + offset * dtWorld) * id + 0.5) * inverseDimensions;
+  vec3 stepCoordinate = dtWorld * id * inverseDimensions;
   InitClassify();
 
   //AVS::Effect::Init
@@ -96,7 +118,7 @@ void main()
     if (T < u_termination)
       break;
 #endif
-    float t = t0 + (float(i) + offset) * dt;
+    float t = t0 + (float(i) + offset) * dtWorld;
     vec3 index = io + t * id;
     vec3 coordinate = firstCoordinate + float(i) * stepCoordinate;
 #ifdef AVS_EFFECT_VOLUME
@@ -106,10 +128,17 @@ void main()
     vec4 voxel = vec4(textureLod(u_scalars, coordinate, 0.0).r);
 #endif
     vec4 here = Classify(voxel.r);
+    AVS_CROP(here, index);
     float extinction = exp(-here.a * dt);
     //AVS::Effect::Sample
+#ifndef AVS_EFFECT_KEEPS_TRANSMITTANCE
     if (T >= u_termination)
       T *= extinction;
+#endif
   }
+#ifdef AVS_EFFECT_OUTPUT
+  gl_FragData[0] = EffectOutput(L, T);
+#else
   gl_FragData[0] = vec4(L, 1.0 - T);
+#endif
 }
