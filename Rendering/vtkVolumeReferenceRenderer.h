@@ -253,7 +253,8 @@ public:
   /**
    * Cropping as vtkVolumeMapper's: region planes (xmin, xmax, ymin, ymax, zmin, zmax) in data
    * coordinates, origin + index x spacing along the image's axes, and the 27 region flags
-   * (vtkVolumeMapper's presets: VTK_CROP_SUBVOLUME and so on). Default off, sub-volume.
+   * (vtkVolumeMapper's presets, the same values as VTK_CROP_SUBVOLUME and so on). Default off,
+   * sub-volume.
    */
   vtkSetMacro(Cropping, vtkTypeBool);
   vtkGetMacro(Cropping, vtkTypeBool);
@@ -262,6 +263,11 @@ public:
   vtkGetVector6Macro(CroppingRegionPlanes, double);
   vtkSetClampMacro(CroppingRegionFlags, int, 0x0, 0x7ffffff);
   vtkGetMacro(CroppingRegionFlags, int);
+  void SetCroppingRegionFlagsToSubVolume() { this->SetCroppingRegionFlags(0x0002000); }
+  void SetCroppingRegionFlagsToFence() { this->SetCroppingRegionFlags(0x2ebfeba); }
+  void SetCroppingRegionFlagsToInvertedFence() { this->SetCroppingRegionFlags(0x5140145); }
+  void SetCroppingRegionFlagsToCross() { this->SetCroppingRegionFlags(0x0417410); }
+  void SetCroppingRegionFlagsToInvertedCross() { this->SetCroppingRegionFlags(0x7be8bef); }
   ///@}
 
   /**
