@@ -167,6 +167,7 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
     t = nullptr;
   }
   this->LightTextureDimensions = { 0, 0, 0 };
+  this->ImageSampler.ReleaseGraphicsResources(window);
   if (this->Quad && window)
   {
     this->Quad->ReleaseGraphicsResources(window);
@@ -1052,8 +1053,30 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     state->vtkglDisable(GL_DEPTH_TEST);
     state->vtkglDepthMask(GL_FALSE);
     state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    state->vtkglViewport(x, y, width, height);
-    this->Quad->Render();
+    // At an image sample distance other than 1 the pass goes through an offscreen target and is
+    // composited from it; at 1, or when that target cannot be made, straight into the viewport.
+    vtkOpenGLShaderCache* cache = window->GetShaderCache();
+    if (this->ImageSampler.Draw(window,
+          x,
+          y,
+          width,
+          height,
+          frame.ImageSampleDistance,
+          [&]
+          {
+            cache->ReadyShaderProgram(program);
+            this->Quad->Render();
+          }))
+    {
+      this->LastPassSize = { this->ImageSampler.GetTargetWidth(),
+        this->ImageSampler.GetTargetHeight() };
+    }
+    else
+    {
+      state->vtkglViewport(x, y, width, height);
+      this->Quad->Render();
+      this->LastPassSize = { width, height };
+    }
   }
 
   for (vtkTextureObject* t : { this->Depth.Get(),

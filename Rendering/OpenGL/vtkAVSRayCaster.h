@@ -16,6 +16,7 @@
 #include "ScatteringTable.h"
 #include "TransferFunction.h"
 
+#include "vtkAVSImageSampler.h"
 #include "vtkSmartPointer.h"
 
 #include <memory>
@@ -116,11 +117,15 @@ public:
     double UnitDistance = 1.0;
     std::vector<avs::Light> Lights; ///< world space
     bool Jitter = true;
+    /// Pixels per ray along each axis (vtkAVSImageSampler); 1: one ray per pixel.
+    double ImageSampleDistance = 1.0;
   };
 
   /// Draws the volume into the renderer's viewport. Returns false (and draws nothing) when the
   /// program cannot be built.
   bool Render(vtkRenderer* renderer, const Frame& frame, std::string& error);
+  /// Rays the last Render cast along x and y.
+  const std::array<int, 2>& GetLastPassSize() const { return this->LastPassSize; }
 
 private:
   /// A 3D float texture of `components` channels (data may be null: allocated, undefined), in
@@ -160,6 +165,8 @@ private:
   vtkSmartPointer<vtkTextureObject> Scratch[3];
   vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFramebuffer;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  vtkAVSImageSampler ImageSampler; ///< the pass at image sample distances other than 1
+  std::array<int, 2> LastPassSize{ 0, 0 };
   int QuadMode = -1;
   std::string QuadDefines;
   int DepthFormat = 0;
