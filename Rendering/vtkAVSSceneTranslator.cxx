@@ -215,9 +215,15 @@ bool vtkAVSSceneTranslator::ToTransferFunction(vtkVolumeProperty* property,
   return true;
 }
 
-std::vector<avs::Light> vtkAVSSceneTranslator::ToLights(vtkRenderer* renderer, vtkCamera* camera)
+std::vector<avs::Light> vtkAVSSceneTranslator::ToLights(vtkRenderer* renderer,
+  vtkCamera* camera,
+  std::vector<bool>* followsCamera)
 {
   std::vector<avs::Light> lights;
+  if (followsCamera)
+  {
+    followsCamera->clear();
+  }
   auto toVec = [](const double* v) { return avs::Vec3{ v[0], v[1], v[2] }; };
   auto add = [&](vtkLight* l)
   {
@@ -262,6 +268,10 @@ std::vector<avs::Light> vtkAVSSceneTranslator::ToLights(vtkRenderer* renderer, v
       return; // no direction: VTK draws nothing from it either
     }
     lights.push_back(out);
+    if (followsCamera)
+    {
+      followsCamera->push_back(l->LightTypeIsHeadlight() || l->LightTypeIsCameraLight());
+    }
   };
   bool any = false;
   if (renderer)

@@ -45,7 +45,11 @@ public:
 
   /// The switched-on lights of `renderer` in world space (headlights follow the camera, camera
   /// lights are transformed by it). A renderer without lights gets a headlight, as VTK does.
-  static std::vector<avs::Light> ToLights(vtkRenderer* renderer, vtkCamera* camera);
+  /// `followsCamera`, when given, gets for each light whether it moves with the camera
+  /// (headlights and camera lights).
+  static std::vector<avs::Light> ToLights(vtkRenderer* renderer,
+    vtkCamera* camera,
+    std::vector<bool>* followsCamera = nullptr);
 
   static avs::Camera ToCamera(vtkCamera* camera);
 };
