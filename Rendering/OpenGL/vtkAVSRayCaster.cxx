@@ -177,14 +177,25 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
   this->QuadDefines.clear();
   if (window)
   {
+    // The programs are names in `window`'s context, which need not be the current one (a mapper
+    // moving to another window releases the first one's resources).
+    auto* context = vtkOpenGLRenderWindow::SafeDownCast(window);
+    if (context)
+    {
+      context->PushContext();
+    }
     for (unsigned int* program :
       { &this->ComputeProgram, &this->OcclusionProgram, &this->AverageProgram })
     {
-      if (*program)
+      if (*program && context)
       {
         glDeleteProgram(*program);
       }
       *program = 0;
+    }
+    if (context)
+    {
+      context->PopContext();
     }
     this->ComputeSupport = -1; // asked again in the next context
     this->SoftwareRenderer = -1;
