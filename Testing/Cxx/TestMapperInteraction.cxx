@@ -368,6 +368,38 @@ int main(int, char*[])
     }
   }
 
+  // --- Image sample distance 0.5: four rays per pixel, the 60^2 picture is the 120^2 picture
+  // averaged over 2 x 2 blocks (the bilinear sample at a pixel's centre, between four rays).
+  {
+    vtkNew<vtkAmbientScatteringVolumeMapper> mapper;
+    mapper->AutoAdjustSampleDistancesOff();
+    Scene fine(mapper, data, 120);
+    AddTestLights(fine.Renderer);
+    const auto full = fine.Render();
+    Scene coarse(mapper, data, 60);
+    AddTestLights(coarse.Renderer);
+    mapper->SetImageSampleDistance(0.5f);
+    const auto super = coarse.Render();
+    double most = 0.0;
+    for (int y = 0; y < 60; ++y)
+      for (int x = 0; x < 60; ++x)
+        for (int c = 0; c < 3; ++c)
+        {
+          const double mean = 0.25 *
+            (Channel(full, 2 * x, 2 * y, c) + Channel(full, 2 * x + 1, 2 * y, c) +
+              Channel(full, 2 * x, 2 * y + 1, c) + Channel(full, 2 * x + 1, 2 * y + 1, c));
+          most = std::max(most, std::abs(Channel(super, x, y, c) - mean));
+        }
+    AVS_CHECK(most <= 1.0);
+    mapper->SetImageSampleDistance(1.0f);
+    const auto single = coarse.Render();
+    AVS_CHECK(MaximumDifference(super, single) > 8); // one ray per pixel is another picture
+    if (most > 1.0)
+    {
+      std::cerr << "distance 0.5 against 2 x 2 means of 120^2 rays: " << most << "\n";
+    }
+  }
+
   // --- Interaction reduces the rays of every mapper; the clamps hold.
   {
     vtkNew<vtkEmissionAbsorptionVolumeMapper> ea;
