@@ -73,9 +73,9 @@ public:
    * As VTK's documentation describes it. Two differences from vtkOpenGLGPUVolumeRayCastMapper
    * (VTK 9.1), whose auto-adjustment lengthens the ray step (to the smallest spacing over its
    * reduction factor, ignoring SampleDistance) and leaves the picture's size alone: here the
-   * number of rays is adjusted and the step stays SampleDistance (it is compiled into the
-   * ambient-scattering look-ahead); and ImageSampleDistance keeps the value set (the distance
-   * in use is GetLastImageSampleDistance()), so switching this off returns to it.
+   * number of rays is adjusted and the step stays SampleDistance (an interactive picture is
+   * the still picture at a lower resolution); and ImageSampleDistance keeps the value set (the
+   * distance in use is GetLastImageSampleDistance()), so switching this off returns to it.
    */
   vtkSetClampMacro(AutoAdjustSampleDistances, vtkTypeBool, 0, 1);
   vtkGetMacro(AutoAdjustSampleDistances, vtkTypeBool);
