@@ -182,31 +182,29 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
   this->Quad.reset();
   this->QuadMode = -1;
   this->QuadDefines.clear();
-  if (window)
+  // The programs are names in `window`'s context, which need not be the current one (a mapper
+  // moving to another window releases the first one's resources). Without a window (it was
+  // deleted, and its context with it) the names are only forgotten.
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (context)
   {
-    // The programs are names in `window`'s context, which need not be the current one (a mapper
-    // moving to another window releases the first one's resources).
-    auto* context = vtkOpenGLRenderWindow::SafeDownCast(window);
-    if (context)
-    {
-      context->PushContext();
-    }
-    for (unsigned int* program :
-      { &this->ComputeProgram, &this->OcclusionProgram, &this->AverageProgram })
-    {
-      if (*program && context)
-      {
-        glDeleteProgram(*program);
-      }
-      *program = 0;
-    }
-    if (context)
-    {
-      context->PopContext();
-    }
-    this->ComputeSupport = -1; // asked again in the next context
-    this->SoftwareRenderer = -1;
+    context->PushContext();
   }
+  for (unsigned int* program :
+    { &this->ComputeProgram, &this->OcclusionProgram, &this->AverageProgram })
+  {
+    if (*program && context)
+    {
+      glDeleteProgram(*program);
+    }
+    *program = 0;
+  }
+  if (context)
+  {
+    context->PopContext();
+  }
+  this->ComputeSupport = -1; // asked again in the next context
+  this->SoftwareRenderer = -1;
   if (window == this->Window)
   {
     this->Window = nullptr;
