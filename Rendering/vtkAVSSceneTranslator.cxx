@@ -218,11 +218,16 @@ bool vtkAVSSceneTranslator::ToTransferFunction(vtkVolumeProperty* property,
 
 std::vector<avs::Light> vtkAVSSceneTranslator::ToLights(vtkRenderer* renderer,
   vtkCamera* camera,
-  double lightScale)
+  double lightScale,
+  std::vector<bool>* followsCamera)
 {
   // VTK light units: E = 4 pi I c (ALGORITHM.md section 1).
   const double unit = 4.0 * avs::Pi * (std::isfinite(lightScale) ? std::max(0.0, lightScale) : 0.0);
   std::vector<avs::Light> lights;
+  if (followsCamera)
+  {
+    followsCamera->clear();
+  }
   auto toVec = [](const double* v) { return avs::Vec3{ v[0], v[1], v[2] }; };
   auto add = [&](vtkLight* l)
   {
@@ -267,6 +272,10 @@ std::vector<avs::Light> vtkAVSSceneTranslator::ToLights(vtkRenderer* renderer,
       return; // no direction: VTK draws nothing from it either
     }
     lights.push_back(out);
+    if (followsCamera)
+    {
+      followsCamera->push_back(l->LightTypeIsHeadlight() || l->LightTypeIsCameraLight());
+    }
   };
   bool any = false;
   if (renderer)

@@ -48,9 +48,12 @@ public:
   /// VTK light units (ALGORITHM.md section 1): irradiance = 4 pi x intensity x diffuse colour x
   /// `lightScale`, so that a light of intensity 1 on a thin, white, isotropic medium of albedo 1
   /// gives back the emission-absorption colour, as VTK's own scattering shader does.
+  /// `followsCamera`, when given, gets for each light whether it moves with the camera
+  /// (headlights and camera lights).
   static std::vector<avs::Light> ToLights(vtkRenderer* renderer,
     vtkCamera* camera,
-    double lightScale = 1.0);
+    double lightScale = 1.0,
+    std::vector<bool>* followsCamera = nullptr);
 
   static avs::Camera ToCamera(vtkCamera* camera);
 };

@@ -2,6 +2,7 @@
 
 #include "AmbientOcclusion.h"
 #include "AveragedExtinction.h"
+#include "ImageSampleDistance.h"
 #include "LightVolume.h"
 #include "ReferenceRenderer.h"
 #include "ScatteringParameters.h"
@@ -28,6 +29,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 
 struct vtkAVSVolumeMapper::Internals
@@ -97,6 +99,10 @@ struct vtkAVSVolumeMapper::Internals
   vtkNew<vtkMatrix4x4> WorldToIndex;
   avs::ScatteringParameters Parameters;
   std::vector<avs::Light> WorldLights;
+  std::vector<bool> FollowsCamera; ///< per light: a headlight or camera light
+
+  /// The ray-casting pass's measured cost (AutoAdjustSampleDistances); 0: not measured yet.
+  double SecondsPerRay = 0.0;
 };
 
 namespace
@@ -155,7 +161,7 @@ void vtkAVSVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
   }
 }
 
-bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
+bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool interactive)
 {
   auto& in = *this->Internal;
   std::string error;
@@ -224,6 +230,14 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   // Parameters: base values, then the subclass's.
   avs::ScatteringParameters p;
   p.SampleDistance = this->SampleDistance;
+  if (this->LockSampleDistanceToInputSpacing)
+  {
+    double spacing[3];
+    int extent[6];
+    input->GetSpacing(spacing);
+    input->GetExtent(extent);
+    p.SampleDistance = this->SpacingAdjustedSampleDistance(spacing, extent);
+  }
   p.TerminationTransmittance = this->TerminationTransmittance;
   this->FillParameters(p);
   in.Parameters = p.Resolve(in.Scalars.Geometry);
@@ -270,14 +284,15 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   }
 
   // Lights in world space, at most 8.
-  in.WorldLights =
-    vtkAVSSceneTranslator::ToLights(renderer, renderer->GetActiveCamera(), rp.LightScale);
+  in.WorldLights = vtkAVSSceneTranslator::ToLights(
+    renderer, renderer->GetActiveCamera(), rp.LightScale, &in.FollowsCamera);
   if (in.WorldLights.size() > static_cast<std::size_t>(vtkAVSRayCaster::MaximumNumberOfLights))
   {
     vtkWarningMacro("Only the first " << vtkAVSRayCaster::MaximumNumberOfLights << " of "
                                       << in.WorldLights.size() << " lights are used.");
     in.WorldLights.resize(vtkAVSRayCaster::MaximumNumberOfLights);
   }
+  in.FollowsCamera.resize(in.WorldLights.size(), false);
 
   // Uploads of what changed.
   if (!in.ScalarsUploaded)
@@ -451,9 +466,13 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     dataLight.Position = Transform(worldToData, dataLight.Position);
     dataLight.FocalPoint = Transform(worldToData, dataLight.FocalPoint);
     auto& state = in.Lights[j];
-    if (!state.Built || !SamePose(state.DataFrame, dataLight) ||
-      state.AveragedVersion != in.AveragedVersion || state.SliceVersion != in.SliceVersion ||
-      state.Radius != rp.AmbientRadius)
+    const bool current = state.Built && state.AveragedVersion == in.AveragedVersion &&
+      state.SliceVersion == in.SliceVersion && state.Radius == rp.AmbientRadius;
+    // While interacting, a light that follows the camera keeps the volume of its last pose (the
+    // still frame rebuilds it): only the pose is stale, and it moves with every camera move.
+    const bool keep =
+      interactive && current && in.FollowsCamera[j] && state.DataFrame.Type == dataLight.Type;
+    if (!current || (!SamePose(state.DataFrame, dataLight) && !keep))
     {
       this->UpdateProgress(static_cast<double>(j) / n);
       if (gpu)
@@ -503,6 +522,8 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
 
 void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
   auto& in = *this->Internal;
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   if (!window)
@@ -558,7 +579,12 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     }
     std::sort(blend.IsoValues.begin(), blend.IsoValues.end());
   }
-  if (!this->Prepare(renderer, volume))
+  // VTK's test for an interactive render (vtkGPUVolumeRayCastMapper's and
+  // vtkFixedPointVolumeRayCastMapper's): less than a second allotted to the volume.
+  const double allocated = volume->GetAllocatedRenderTime();
+  const bool adjust = this->AutoAdjustSampleDistances != 0;
+  const bool interactive = adjust && allocated < 1.0;
+  if (!this->Prepare(renderer, volume, interactive))
   {
     return;
   }
@@ -566,6 +592,20 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   blend.ScalarRange[1] = in.Transfer.Maximum;
   blend.AverageRange[0] = std::min(this->AverageIPScalarRange[0], this->AverageIPScalarRange[1]);
   blend.AverageRange[1] = std::max(this->AverageIPScalarRange[0], this->AverageIPScalarRange[1]);
+  int width = 0, height = 0, x = 0, y = 0;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  double distance = this->ImageSampleDistance;
+  if (adjust)
+  {
+    avs::FrameBudget budget;
+    budget.AllocatedSeconds = allocated;
+    budget.SecondsPerRay = in.SecondsPerRay;
+    budget.Pixels = static_cast<double>(width) * height;
+    budget.Previous = this->LastImageSampleDistance;
+    budget.Minimum = this->MinimumImageSampleDistance;
+    budget.Maximum = this->MaximumImageSampleDistance;
+    distance = avs::ChooseImageSampleDistance(budget);
+  }
   vtkAVSRayCaster::Frame frame;
   frame.Mode = this->GetEffect() == 0
     ? avs::RenderMode::EmissionAbsorption
@@ -585,13 +625,34 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.Prop = volume;
   frame.Mapper = this;
   frame.PeelingFront = role == vtkAVSRenderPasses::Role::PeelingFront;
+  frame.ImageSampleDistance = distance;
+  // The adjustment times the ray-casting pass alone (the precomputation does not scale with the
+  // rays), finished on the GPU as vtkOpenGLGPUVolumeRayCastMapper finishes its frames.
+  if (adjust)
+  {
+    window->WaitForCompletion();
+  }
+  const auto passStart = Clock::now();
   std::string error;
   if (!in.RayCaster.Render(renderer, frame, error))
   {
     vtkErrorMacro("Cannot render: " << error);
     return;
   }
+  if (adjust)
+  {
+    window->WaitForCompletion();
+    const auto& rays = in.RayCaster.GetLastPassSize();
+    const double seconds = std::chrono::duration<double>(Clock::now() - passStart).count();
+    in.SecondsPerRay = seconds / std::max(1.0, static_cast<double>(rays[0]) * rays[1]);
+  }
+  this->LastImageSampleDistance = static_cast<float>(distance);
   ++this->NumberOfRenderedFrames;
+  if (interactive)
+  {
+    ++this->NumberOfInteractiveFrames;
+  }
+  this->TimeToDraw = std::chrono::duration<double>(Clock::now() - start).count();
 }
 
 void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
@@ -599,6 +660,14 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SampleDistance: " << this->SampleDistance
      << (this->SampleDistance > 0 ? "" : " (automatic)") << "\n";
+  os << indent << "LockSampleDistanceToInputSpacing: "
+     << (this->LockSampleDistanceToInputSpacing ? "On" : "Off") << "\n";
+  os << indent << "AutoAdjustSampleDistances: " << (this->AutoAdjustSampleDistances ? "On" : "Off")
+     << "\n";
+  os << indent << "ImageSampleDistance: " << this->ImageSampleDistance << "\n";
+  os << indent << "MinimumImageSampleDistance: " << this->MinimumImageSampleDistance << "\n";
+  os << indent << "MaximumImageSampleDistance: " << this->MaximumImageSampleDistance << "\n";
+  os << indent << "LastImageSampleDistance: " << this->LastImageSampleDistance << "\n";
   os << indent << "UseJittering: " << (this->UseJittering ? "On" : "Off") << "\n";
   os << indent << "TerminationTransmittance: " << this->TerminationTransmittance << "\n";
   os << indent << "PrecomputeOnGPU: " << (this->PrecomputeOnGPU ? "On" : "Off") << "\n";
@@ -623,4 +692,5 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfLightVolumeRebuilds: " << this->NumberOfLightVolumeRebuilds << "\n";
   os << indent << "NumberOfOcclusionRebuilds: " << this->NumberOfOcclusionRebuilds << "\n";
   os << indent << "NumberOfRenderedFrames: " << this->NumberOfRenderedFrames << "\n";
+  os << indent << "NumberOfInteractiveFrames: " << this->NumberOfInteractiveFrames << "\n";
 }

@@ -16,6 +16,18 @@
  * volume, a change of data, transfer function or medium parameters rebuilds what depends on it.
  * The counters below say how often each happened.
  *
+ * Interaction works as with vtkGPUVolumeRayCastMapper: with AutoAdjustSampleDistances on (the
+ * default), a frame whose volume is allotted less than a second (VTK's test for an interactive
+ * render: vtkRenderWindowInteractor's DesiredUpdateRate, 15 frames per second, while a mouse
+ * button is down; its StillUpdateRate gives the still frame thousands of seconds) casts fewer
+ * rays, chosen from the measured time of earlier frames to fit the allotted time, within
+ * [MinimumImageSampleDistance, MaximumImageSampleDistance], and composites them upscaled; and
+ * the light volumes of lights that follow the camera (headlights, camera lights, a light kit)
+ * are kept from the last still frame instead of rebuilt on every camera move (a moved scene
+ * light, or a change of data, transfer function or parameters, still rebuilds during
+ * interaction). The still frame renders at MinimumImageSampleDistance (1: exact) and rebuilds
+ * the light volumes that became stale, so it is the frame a render without interaction gives.
+ *
  * Bad input — no or empty image, no point scalars, more than one component, NaN or infinite
  * values, bad spacing, a volume too large for the GPU — gives a vtkErrorMacro and draws nothing.
  */
@@ -41,10 +53,74 @@ public:
 
   ///@{
   /**
-   * Ray-marching step in world units. Default 0: half the smallest voxel spacing.
+   * Ray-marching step in world units. Default 0: half the smallest voxel spacing. Not used
+   * when LockSampleDistanceToInputSpacing is on.
    */
   vtkSetClampMacro(SampleDistance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(SampleDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * If on (the default), the image sample distance is varied to fit the render time allotted
+   * to the volume (vtkProp::GetAllocatedRenderTime(): the render window's desired update rate,
+   * which vtkRenderWindowInteractor raises to its DesiredUpdateRate while interacting, shared
+   * among the renderers and props), within [MinimumImageSampleDistance,
+   * MaximumImageSampleDistance], and frames allotted less than a second count as interactive:
+   * they keep the light volumes of camera-following lights (see the class documentation). Off:
+   * every frame renders at ImageSampleDistance and rebuilds what is stale.
+   *
+   * As VTK's documentation describes it. Two differences from vtkOpenGLGPUVolumeRayCastMapper
+   * (VTK 9.1), whose auto-adjustment lengthens the ray step (to the smallest spacing over its
+   * reduction factor, ignoring SampleDistance) and leaves the picture's size alone: here the
+   * number of rays is adjusted and the step stays SampleDistance (an interactive picture is
+   * the still picture at a lower resolution); and ImageSampleDistance keeps the value set (the
+   * distance in use is GetLastImageSampleDistance()), so switching this off returns to it.
+   */
+  vtkSetClampMacro(AutoAdjustSampleDistances, vtkTypeBool, 0, 1);
+  vtkGetMacro(AutoAdjustSampleDistances, vtkTypeBool);
+  vtkBooleanMacro(AutoAdjustSampleDistances, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Pixels per ray along each axis when AutoAdjustSampleDistances is off: 1 (the default) casts
+   * one ray per pixel, 2 one ray for every 2 x 2 pixels (the picture is composited from them,
+   * interpolated bilinearly), 0.5 four rays per pixel. Range [0.1, 100].
+   */
+  vtkSetClampMacro(ImageSampleDistance, float, 0.1f, 100.0f);
+  vtkGetMacro(ImageSampleDistance, float);
+  ///@}
+
+  ///@{
+  /**
+   * The range of the image sample distance when AutoAdjustSampleDistances is on: still frames
+   * render at the minimum (default 1), interactive frames at most at the maximum (default 10).
+   * Range [0.1, 100] each.
+   */
+  vtkSetClampMacro(MinimumImageSampleDistance, float, 0.1f, 100.0f);
+  vtkGetMacro(MinimumImageSampleDistance, float);
+  vtkSetClampMacro(MaximumImageSampleDistance, float, 0.1f, 100.0f);
+  vtkGetMacro(MaximumImageSampleDistance, float);
+  ///@}
+
+  /**
+   * The image sample distance the last frame was rendered at (1 before the first frame).
+   */
+  vtkGetMacro(LastImageSampleDistance, float);
+
+  ///@{
+  /**
+   * Compute the ray step from the data's spacing instead of SampleDistance, as VTK's
+   * vtkVolumeMapper::SpacingAdjustedSampleDistance does: half the mean spacing, shrunk for
+   * volumes of fewer than 100 voxels per axis (about 1/200 of the mean spacing for 2 x 2 x 2
+   * voxels). Off by default. (vtkOpenGLGPUVolumeRayCastMapper applies it only when
+   * AutoAdjustSampleDistances is off; here the step is never auto-adjusted, so it always
+   * applies.)
+   */
+  vtkSetClampMacro(LockSampleDistanceToInputSpacing, vtkTypeBool, 0, 1);
+  vtkGetMacro(LockSampleDistanceToInputSpacing, vtkTypeBool);
+  vtkBooleanMacro(LockSampleDistanceToInputSpacing, vtkTypeBool);
   ///@}
 
   ///@{
@@ -88,13 +164,15 @@ public:
   /**
    * How often the mapper converted and uploaded the input scalars, rebuilt the averaged
    * extinction, rebuilt a light volume (one count per light), rebuilt the ambient-occlusion
-   * volume, and rendered a frame.
+   * volume, rendered a frame, and rendered an interactive frame (AutoAdjustSampleDistances
+   * on, less than a second allotted).
    */
   vtkGetMacro(NumberOfDataUploads, int);
   vtkGetMacro(NumberOfExtinctionRebuilds, int);
   vtkGetMacro(NumberOfLightVolumeRebuilds, int);
   vtkGetMacro(NumberOfOcclusionRebuilds, int);
   vtkGetMacro(NumberOfRenderedFrames, int);
+  vtkGetMacro(NumberOfInteractiveFrames, int);
   ///@}
 
   /**
@@ -127,6 +205,12 @@ protected:
   virtual const avs::ScatteringTable* GetScatteringTable() { return nullptr; }
 
   double SampleDistance = 0.0;
+  vtkTypeBool AutoAdjustSampleDistances = 1;
+  float ImageSampleDistance = 1.0f;
+  float MinimumImageSampleDistance = 1.0f;
+  float MaximumImageSampleDistance = 10.0f;
+  float LastImageSampleDistance = 1.0f;
+  vtkTypeBool LockSampleDistanceToInputSpacing = 0;
   vtkTypeBool UseJittering = 1;
   double TerminationTransmittance = 1.0 / 255.0;
   vtkTypeBool PrecomputeOnGPU = 1;
@@ -138,6 +222,7 @@ protected:
   int NumberOfLightVolumeRebuilds = 0;
   int NumberOfOcclusionRebuilds = 0;
   int NumberOfRenderedFrames = 0;
+  int NumberOfInteractiveFrames = 0;
 
 private:
   vtkAVSVolumeMapper(const vtkAVSVolumeMapper&) = delete;
@@ -145,7 +230,9 @@ private:
 
   struct Internals;
   std::unique_ptr<Internals> Internal;
-  bool Prepare(vtkRenderer* renderer, vtkVolume* volume);
+  /// Converts, checks, uploads and precomputes what changed; an interactive frame keeps the light
+  /// volumes of camera-following lights.
+  bool Prepare(vtkRenderer* renderer, vtkVolume* volume, bool interactive);
 };
 
 #endif

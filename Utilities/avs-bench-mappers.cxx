@@ -10,6 +10,18 @@
 // median of their times is reported. Then the rebuild after a transfer-function change and
 // after a light move (ambient scattering, 4 lights): the frame after the change less the median
 // frame, the median over five changes of each kind.
+//
+// Then interaction, as vtkRenderWindowInteractor drives it (its style sets the render window's
+// desired update rate to the interactor's DesiredUpdateRate, 15, while a button is down, and to
+// its StillUpdateRate, 0.0001, at the release): a still frame, 10 frames turning 3 degrees at
+// rate 15, and the still frame after them, for VTK's mapper shaded with its own adjustment
+// (AutoAdjustSampleDistances on) and ours (AutoAdjustSampleDistances on; ambient scattering also
+// with MaximumImageSampleDistance 4, "as_max4", and with the light kit also without adjustment,
+// "as_fixed", every frame exact as before the adjustment existed), with a headlight and with a
+// light kit (five lights that follow the camera). Reported: the median interactive frame, the
+// still frame after the interaction, the image sample distance ours settled on (VTK's reduction
+// factor of its ray step), and the light-volume rebuilds during and after it (checked: none
+// while interacting, the stale ones at the still frame). --interaction-only runs this part alone.
 #include "ProceduralVolume.h"
 
 #include "vtkAmbientOcclusionVolumeMapper.h"
@@ -21,6 +33,7 @@
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
+#include "vtkLightKit.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
@@ -33,6 +46,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -47,6 +61,16 @@ double Median(std::vector<double> values)
 double Seconds(const std::chrono::steady_clock::time_point& start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// A value vtkObject::Print writes after `label` (0 when absent).
+double PrintedValue(vtkObject* object, const std::string& label)
+{
+  std::ostringstream os;
+  object->Print(os);
+  const std::string text = os.str();
+  const std::size_t at = text.find(label);
+  return at == std::string::npos ? 0.0 : std::atof(text.c_str() + at + label.size());
 }
 
 struct Bench
@@ -99,25 +123,190 @@ struct Bench
     this->Renderer->RemoveVolume(volume);
     return { first, Median(times) };
   }
+
+  struct Interaction
+  {
+    double Interactive = 0.0; ///< median interactive frame
+    double Still = 0.0;       ///< the still frame after the interaction
+    /// Ours: the last interactive image sample distance; VTK's: the last interactive reduction
+    /// factor of its ray step (its PrintSelf's ReductionFactor; the step is divided by it).
+    double Distance = 1.0;
+    int RebuildsInteracting = 0, RebuildsAtStill = 0; ///< ours: light-volume rebuilds
+  };
+
+  /// A still frame, Frames interactive frames at desired update rate 15 with a moving camera,
+  /// and the still frame after them.
+  Interaction Interact(vtkVolumeMapper* mapper, vtkVolumeProperty* property)
+  {
+    constexpr double interactiveRate = 15.0, stillRate = 0.0001; // the interactor's defaults
+    auto* ours = vtkAVSVolumeMapper::SafeDownCast(mapper);
+    vtkNew<vtkVolume> volume;
+    volume->SetMapper(mapper);
+    volume->SetProperty(property);
+    this->Renderer->AddVolume(volume);
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->SetPosition(0.5, 0.7, 4.2);
+    camera->SetFocalPoint(0, 0, 0);
+    camera->SetViewUp(0, 1, 0);
+    this->Renderer->ResetCameraClippingRange();
+    this->Window->SetDesiredUpdateRate(stillRate);
+    this->Frame();
+    const int before = ours ? ours->GetNumberOfLightVolumeRebuilds() : 0;
+    this->Window->SetDesiredUpdateRate(interactiveRate);
+    std::vector<double> times;
+    for (int f = 0; f < this->Frames; ++f)
+    {
+      camera->Azimuth(3.0);
+      this->Renderer->ResetCameraClippingRange();
+      times.push_back(this->Frame());
+    }
+    Interaction out;
+    out.Interactive = Median(times);
+    out.Distance =
+      ours ? ours->GetLastImageSampleDistance() : PrintedValue(mapper, "ReductionFactor: ");
+    const int interacting = ours ? ours->GetNumberOfLightVolumeRebuilds() : 0;
+    this->Window->SetDesiredUpdateRate(stillRate);
+    out.Still = this->Frame();
+    out.RebuildsInteracting = interacting - before;
+    out.RebuildsAtStill = (ours ? ours->GetNumberOfLightVolumeRebuilds() : 0) - interacting;
+    this->Renderer->RemoveVolume(volume);
+    return out;
+  }
+
+  void SetHeadlight()
+  {
+    this->Renderer->RemoveAllLights();
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToHeadlight();
+    light->SetIntensity(5.0);
+    this->Renderer->AddLight(light);
+  }
+
+  void SetLightKit()
+  {
+    this->Renderer->RemoveAllLights();
+    vtkNew<vtkLightKit> kit;
+    kit->SetKeyLightIntensity(5.0);
+    kit->AddLightsToRenderer(this->Renderer);
+  }
 };
+
+/// The interaction scenario (see the top of the file); false when the light-volume rebuilds
+/// were not the expected ones (none while interacting, the stale ones at the still frame).
+bool RunInteraction(Bench& b, int lightGrid)
+{
+  vtkNew<vtkVolumeProperty> shaded;
+  shaded->DeepCopy(b.Property);
+  shaded->ShadeOn();
+  std::printf("# interaction: desired update rate 15 (one renderer, one volume: %.4f s allotted), "
+              "%d frames turning 3 degrees, then a still frame; VTK's mapper shaded; "
+              "AutoAdjustSampleDistances on for all\n",
+    1.0 / 15.0,
+    b.Frames);
+  bool ok = true;
+  for (const std::string lights : { "headlight", "lightkit" })
+  {
+    const std::string suffix = "_" + lights;
+    if (lights == "headlight")
+    {
+      b.SetHeadlight();
+    }
+    else
+    {
+      b.SetLightKit();
+    }
+    vtkNew<vtkGPUVolumeRayCastMapper> vtkShaded;
+    vtkShaded->SetInputData(b.Volume);
+    vtkShaded->SetUseJittering(0);
+    const auto v = b.Interact(vtkShaded, shaded);
+    std::printf("bench interactive_frame_vtk_shaded%s %.4f s\n", suffix.c_str(), v.Interactive);
+    std::printf("bench still_frame_vtk_shaded%s %.4f s\n", suffix.c_str(), v.Still);
+    std::printf("bench reduction_factor_vtk_shaded%s %.2f\n", suffix.c_str(), v.Distance);
+
+    std::vector<std::pair<std::string, vtkSmartPointer<vtkAVSVolumeMapper>>> ours;
+    if (lights == "headlight") // EA and AO do not use the lights
+    {
+      ours.emplace_back("ea", vtkSmartPointer<vtkEmissionAbsorptionVolumeMapper>::New());
+      ours.emplace_back("ao", vtkSmartPointer<vtkAmbientOcclusionVolumeMapper>::New());
+    }
+    // Ambient scattering at VTK's default range of image sample distances, at most 4, and (with
+    // the light kit) without adjustment: every frame exact, every camera light rebuilt.
+    for (const float most : { 10.0f, 4.0f, 0.0f })
+    {
+      if (most == 0.0f && lights == "headlight")
+      {
+        continue;
+      }
+      auto as = vtkSmartPointer<vtkAmbientScatteringVolumeMapper>::New();
+      if (lightGrid > 0)
+      {
+        as->SetLightVolumeMaximumDimension(lightGrid);
+      }
+      if (most > 0.0f)
+      {
+        as->SetMaximumImageSampleDistance(most);
+      }
+      else
+      {
+        as->AutoAdjustSampleDistancesOff();
+      }
+      ours.emplace_back(most == 10.0f ? "as" : (most == 4.0f ? "as_max4" : "as_fixed"), as);
+    }
+    for (auto& [name, mapper] : ours)
+    {
+      mapper->SetInputData(b.Volume);
+      mapper->SetSampleDistance(0.5 * b.Volume->GetSpacing()[0]);
+      mapper->UseJitteringOff();
+      const auto o = b.Interact(mapper, b.Property);
+      const bool scattering = name.rfind("as", 0) == 0;
+      const std::string label = name + (scattering ? suffix : std::string());
+      std::printf("bench interactive_frame_%s %.4f s\n", label.c_str(), o.Interactive);
+      std::printf("bench still_frame_%s %.4f s\n", label.c_str(), o.Still);
+      std::printf("bench image_sample_distance_%s %.1f\n", label.c_str(), o.Distance);
+      if (scattering)
+      {
+        const bool fixed = name == "as_fixed";
+        const int expected = lights == "headlight" ? 1 : (fixed ? 0 : 5);
+        std::printf(
+          "bench light_volume_rebuilds_interactive_%s %d\n", label.c_str(), o.RebuildsInteracting);
+        std::printf("bench light_volume_rebuilds_still_%s %d\n", label.c_str(), o.RebuildsAtStill);
+        ok = ok && o.RebuildsInteracting == (fixed ? 5 * b.Frames : 0) &&
+          o.RebuildsAtStill == expected;
+        std::printf("ratio interactive_%s_over_vtk_shaded%s %.3f\n",
+          label.c_str(),
+          suffix.c_str(),
+          o.Interactive / v.Interactive);
+      }
+    }
+  }
+  return ok;
+}
 } // namespace
 
 int main(int argc, char* argv[])
 {
   int voxels = 256, size = 512, frames = 10, lightGrid = 0;
+  bool interactionOnly = false;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h")
     {
-      std::printf(
-        "Usage: avs-bench-mappers [--voxels N] [--size N] [--frames N] [--light-grid N]\n\n"
-        "Median frame times of VTK's vtkGPUVolumeRayCastMapper and of the module's "
-        "mappers on the built-in nebula\n(N^3 voxels, default 256), N x N pixels "
-        "(default 512), over N frames (default 10), and their ratios.\n"
-        "--light-grid sets the ambient-scattering mappers' LightVolumeMaximumDimension "
-        "(default: the mappers' own default).\n");
+      std::printf("Usage: avs-bench-mappers [--voxels N] [--size N] [--frames N] [--light-grid N] "
+                  "[--interaction-only]\n\n"
+                  "Median frame times of VTK's vtkGPUVolumeRayCastMapper and of the module's "
+                  "mappers on the built-in nebula\n(N^3 voxels, default 256), N x N pixels "
+                  "(default 512), over N frames (default 10), and their ratios;\nthen interactive "
+                  "frames (desired update rate 15) with a headlight and with a light kit.\n"
+                  "--light-grid sets the ambient-scattering mappers' LightVolumeMaximumDimension "
+                  "(default: the mappers' own default).\n"
+                  "--interaction-only runs the interaction scenario alone.\n");
       return 0;
+    }
+    if (arg == "--interaction-only")
+    {
+      interactionOnly = true;
+      continue;
     }
     if (i + 1 < argc &&
       (arg == "--voxels" || arg == "--size" || arg == "--frames" || arg == "--light-grid"))
@@ -203,6 +392,16 @@ int main(int argc, char* argv[])
       ? lightGrid
       : vtkSmartPointer<vtkAmbientScatteringVolumeMapper>::New()->GetLightVolumeMaximumDimension());
 
+  if (interactionOnly)
+  {
+    if (!RunInteraction(b, lightGrid))
+    {
+      std::fprintf(stderr, "avs-bench-mappers: light volumes were rebuilt while interacting\n");
+      return 1;
+    }
+    return 0;
+  }
+
   vtkNew<vtkGPUVolumeRayCastMapper> vtkEA;
   vtkEA->SetInputData(b.Volume);
   vtkEA->SetAutoAdjustSampleDistances(0);
@@ -280,5 +479,10 @@ int main(int argc, char* argv[])
   std::printf("ratio as4_over_ea %.3f\n", as4Times.second / eaTimes.second);
   std::printf("ratio ao_over_ea %.3f\n", aoTimes.second / eaTimes.second);
   std::printf("ratio tf_rebuild_over_ea_frame %.3f\n", tfRebuild / eaTimes.second);
+  if (!RunInteraction(b, lightGrid))
+  {
+    std::fprintf(stderr, "avs-bench-mappers: light volumes were rebuilt while interacting\n");
+    return 1;
+  }
   return 0;
 }

@@ -174,6 +174,7 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
     this->DepthFramebuffer->ReleaseGraphicsResources(window);
   }
   this->DepthFramebuffer = nullptr;
+  this->ImageSampler.ReleaseGraphicsResources(window);
   if (this->Quad && window)
   {
     this->Quad->ReleaseGraphicsResources(window);
@@ -181,20 +182,29 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
   this->Quad.reset();
   this->QuadMode = -1;
   this->QuadDefines.clear();
-  if (window)
+  // The programs are names in `window`'s context, which need not be the current one (a mapper
+  // moving to another window releases the first one's resources). Without a window (it was
+  // deleted, and its context with it) the names are only forgotten.
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (context)
   {
-    for (unsigned int* program :
-      { &this->ComputeProgram, &this->OcclusionProgram, &this->AverageProgram })
-    {
-      if (*program)
-      {
-        glDeleteProgram(*program);
-      }
-      *program = 0;
-    }
-    this->ComputeSupport = -1; // asked again in the next context
-    this->SoftwareRenderer = -1;
+    context->PushContext();
   }
+  for (unsigned int* program :
+    { &this->ComputeProgram, &this->OcclusionProgram, &this->AverageProgram })
+  {
+    if (*program && context)
+    {
+      glDeleteProgram(*program);
+    }
+    *program = 0;
+  }
+  if (context)
+  {
+    context->PopContext();
+  }
+  this->ComputeSupport = -1; // asked again in the next context
+  this->SoftwareRenderer = -1;
   if (window == this->Window)
   {
     this->Window = nullptr;
@@ -1079,9 +1089,31 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   {
     vtkAVSRenderPasses::ScopedCompositing compositing(state);
     vtkOpenGLState::ScopedglViewport viewportGuard(state);
-    state->vtkglViewport(x, y, width, height);
     vtkAVSRenderPasses::ScopedDrawBuffer target(state, frame.PeelingFront ? 1 : 0);
-    this->Quad->Render();
+    // At an image sample distance other than 1 the pass goes through an offscreen target and is
+    // composited from it; at 1, or when that target cannot be made, straight into the viewport.
+    vtkOpenGLShaderCache* cache = window->GetShaderCache();
+    if (this->ImageSampler.Draw(window,
+          x,
+          y,
+          width,
+          height,
+          frame.ImageSampleDistance,
+          [&]
+          {
+            cache->ReadyShaderProgram(program);
+            this->Quad->Render();
+          }))
+    {
+      this->LastPassSize = { this->ImageSampler.GetTargetWidth(),
+        this->ImageSampler.GetTargetHeight() };
+    }
+    else
+    {
+      state->vtkglViewport(x, y, width, height);
+      this->Quad->Render();
+      this->LastPassSize = { width, height };
+    }
   }
 
   for (vtkTextureObject* t : { this->Depth.Get(),

@@ -18,7 +18,10 @@
 #include "TransferFunction.h"
 #include "vtkAVSShaderOptions.h"
 
+#include "vtkAVSImageSampler.h"
+#include "vtkOpenGLRenderWindow.h" // for vtkWeakPointer<vtkOpenGLRenderWindow>
 #include "vtkSmartPointer.h"
+#include "vtkWeakPointer.h"
 
 #include <memory>
 #include <string>
@@ -57,7 +60,7 @@ public:
 
   /// The window whose context holds the resources; a different window releases them first.
   void SetWindow(vtkOpenGLRenderWindow* window);
-  vtkOpenGLRenderWindow* GetWindow() const { return this->Window; }
+  vtkOpenGLRenderWindow* GetWindow() const { return this->Window.Get(); }
   void ReleaseGraphicsResources(vtkWindow* window);
 
   /// Largest 3D texture size of the context (0 without a context).
@@ -131,11 +134,15 @@ public:
     vtkProp* Prop = nullptr;
     vtkAbstractMapper* Mapper = nullptr;
     bool PeelingFront = false;
+    /// Pixels per ray along each axis (vtkAVSImageSampler); 1: one ray per pixel.
+    double ImageSampleDistance = 1.0;
   };
 
   /// Draws the volume into the current viewport (the renderer's, or a render pass's). Returns
   /// false when the program cannot be built (nothing drawn) or OpenGL reported an error.
   bool Render(vtkRenderer* renderer, const Frame& frame, std::string& error);
+  /// Rays the last Render cast along x and y.
+  const std::array<int, 2>& GetLastPassSize() const { return this->LastPassSize; }
 
 private:
   /// A 3D float texture of `components` channels (data may be null: allocated, undefined), in
@@ -161,7 +168,9 @@ private:
   void CaptureDepth(int x, int y, int width, int height);
   unsigned int BuildComputeProgram(const char* source, const char* what);
 
-  vtkOpenGLRenderWindow* Window = nullptr;
+  /// Weak: the window may be deleted before the mapper (a volume removed from its renderer is
+  /// not told), and its context took its resources with it.
+  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   vtkSmartPointer<vtkTextureObject> Scalars, Transfer, Occlusion, Table, Depth;
   std::vector<float> LogGain; ///< log(F(tau) exp(2 tau)) on the table's tau nodes
   /// Data grid, for ambient scattering: .r scalar, .g averaged sigma_t at the voxel.
@@ -176,6 +185,8 @@ private:
   vtkSmartPointer<vtkTextureObject> Scratch[3];
   vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFramebuffer;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  vtkAVSImageSampler ImageSampler; ///< the pass at image sample distances other than 1
+  std::array<int, 2> LastPassSize{ 0, 0 };
   int QuadMode = -1;
   std::string QuadDefines;
   int DepthFormat = 0;
