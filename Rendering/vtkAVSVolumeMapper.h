@@ -28,8 +28,20 @@
  * interaction). The still frame renders at MinimumImageSampleDistance (1: exact) and rebuilds
  * the light volumes that became stale, so it is the frame a render without interaction gives.
  *
+ * Clipping planes (vtkAbstractMapper::ClippingPlanes, at most 8, in world coordinates) and
+ * cropping (vtkVolumeMapper's Cropping, CroppingRegionPlanes in data coordinates along the
+ * image's axes, CroppingRegionFlags and their presets) remove material for every purpose: the
+ * rays, the averaged extinction, the light volumes and the occlusion volume, so light enters
+ * through a cut. Moving a plane, or the volume against the planes, rebuilds what depends on the
+ * extinction (the counters show it). Blend modes: vtkEmissionAbsorptionVolumeMapper renders
+ * composite, maximum, minimum and average intensity (with AverageIPScalarRange), additive and
+ * isosurface as vtkGPUVolumeRayCastMapper does unshaded; the ambient-occlusion and
+ * ambient-scattering mappers render composite only, and any other mode (slice for all three)
+ * is a vtkErrorMacro naming the mode, with nothing drawn.
+ *
  * Bad input — no or empty image, no point scalars, more than one component, NaN or infinite
- * values, bad spacing, a volume too large for the GPU — gives a vtkErrorMacro and draws nothing.
+ * values, bad spacing, a volume too large for the GPU, more than 8 clipping planes or one with
+ * a zero normal — gives a vtkErrorMacro and draws nothing.
  */
 #ifndef vtkAVSVolumeMapper_h
 #define vtkAVSVolumeMapper_h
@@ -53,8 +65,11 @@ public:
 
   ///@{
   /**
-   * Ray-marching step in world units. Default 0: half the smallest voxel spacing. Not used
-   * when LockSampleDistanceToInputSpacing is on.
+   * Ray-marching step in data units (the volume's coordinates before the vtkVolume's matrix:
+   * world units for an untransformed volume), as vtkGPUVolumeRayCastMapper's. Opacity is
+   * integrated in data units too, so a scaled vtkVolume renders as the unscaled one magnified.
+   * Default 0: half the smallest voxel spacing. Not used when LockSampleDistanceToInputSpacing
+   * is on.
    */
   vtkSetClampMacro(SampleDistance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(SampleDistance, double);

@@ -23,8 +23,9 @@ public:
 
   ///@{
   /**
-   * Occlusion radius R in world units. Default 0: automatic, 1/64 of the volume's diagonal, at
-   * least the smallest voxel spacing and at most half the volume's smallest side.
+   * Occlusion radius R in data units (world units for an untransformed volume). Default 0:
+   * automatic, 1/64 of the volume's diagonal, at least the smallest voxel spacing and at most half
+   * the volume's smallest side.
    */
   vtkSetClampMacro(OcclusionRadius, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(OcclusionRadius, double);

@@ -34,9 +34,9 @@ public:
 
   ///@{
   /**
-   * Ambient radius r in world units. Default 0: automatic, 1/64 of the volume's diagonal, at
-   * least the smallest voxel spacing and at most half the volume's smallest side (so that the
-   * ball fits into thin slabs and stacks of a few slices).
+   * Ambient radius r in data units (world units for an untransformed volume). Default 0: automatic,
+   * 1/64 of the volume's diagonal, at least the smallest voxel spacing and at most half the
+   * volume's smallest side (so that the ball fits into thin slabs and stacks of a few slices).
    */
   vtkSetClampMacro(AmbientRadius, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(AmbientRadius, double);

@@ -24,20 +24,20 @@ struct ScatteringParameters
   // Medium (section 1).
   double Albedo = 0.9;         ///< Lambda in [0, 1]
   double Anisotropy = 0.0;     ///< Henyey–Greenstein g in [-0.95, 0.95]
-  double AmbientRadius = 0.0;  ///< r in world units; 0: automatic
+  double AmbientRadius = 0.0;  ///< r in the grid's (data) units; 0: automatic
   double EmissionWeight = 0.0; ///< k_e >= 0: emitted radiance k_e c
   /// >= 0: multiplies every light's irradiance (VTK light units, E = 4 pi I c LightScale); applied
   /// where the VTK lights are translated (vtkAVSSceneTranslator::ToLights).
   double LightScale = 1.0;
 
   // Ambient occlusion (section 7).
-  double OcclusionRadius = 0.0;   ///< R in world units; 0: the ambient radius
+  double OcclusionRadius = 0.0;   ///< R in data units; 0: the ambient radius
   int NumberOfDirections = 32;    ///< K >= 14
   double AmbientWeight = 1.0;     ///< k_amb
   double DirectLightWeight = 0.0; ///< optional unshadowed direct light in the AO renderer
 
   // Ray casting.
-  double SampleDistance = 0.0; ///< world units; 0: automatic (half the smallest spacing)
+  double SampleDistance = 0.0; ///< data units; 0: automatic (half the smallest spacing)
   double TerminationTransmittance = 1.0 / 255.0; ///< stop a ray when T falls below
   int LightVolumeMaximumDimension = 128;     ///< light volumes use the data's size, capped by this
   int OcclusionVolumeMaximumDimension = 128; ///< the AO volume likewise
