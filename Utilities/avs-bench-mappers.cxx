@@ -437,11 +437,14 @@ int main(int argc, char* argv[])
   }
   if (clipping)
   {
-    const double planes[3][6] = { { 0.4, 0, 0, -1, 0.2, 0.1 }, { 0, -0.5, 0, 0.1, 1, 0.2 },
-      { 0, 0, 0.5, 0.2, -0.1, -1 } };
+    const double planes[3][6] = {
+      { 0.4, 0, 0, -1, 0.2, 0.1 }, { 0, -0.5, 0, 0.1, 1, 0.2 }, { 0, 0, 0.5, 0.2, -0.1, -1 }
+    };
     for (vtkVolumeMapper* m : { static_cast<vtkVolumeMapper*>(vtkEA),
-           static_cast<vtkVolumeMapper*>(ea), static_cast<vtkVolumeMapper*>(ao),
-           static_cast<vtkVolumeMapper*>(as1), static_cast<vtkVolumeMapper*>(as4) })
+           static_cast<vtkVolumeMapper*>(ea),
+           static_cast<vtkVolumeMapper*>(ao),
+           static_cast<vtkVolumeMapper*>(as1),
+           static_cast<vtkVolumeMapper*>(as4) })
     {
       for (const auto& p : planes)
       {

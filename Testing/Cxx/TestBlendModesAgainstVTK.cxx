@@ -16,6 +16,7 @@
 #include "vtkPNGWriter.h"
 
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -220,8 +221,21 @@ int main(int argc, char* argv[])
     AVS_CHECK(
       observer->LastError.find(std::string("the ") + r.Name + " blend mode") != std::string::npos);
     AVS_CHECK(Brightness(picture) == 0.0);
+    // PrintSelf says so.
+    std::ostringstream printed;
+    r.Mapper->Print(printed);
+    AVS_CHECK(printed.str().find(std::string("BlendMode: ") + r.Name + " (not honoured") !=
+      std::string::npos);
     r.Mapper->RemoveObserver(observer);
     r.Mapper->SetBlendModeToComposite();
+  }
+  {
+    std::ostringstream printed;
+    ours->SetBlendModeToMaximumIntensity();
+    ours->Print(printed);
+    AVS_CHECK(printed.str().find("BlendMode: maximum intensity (honoured)") != std::string::npos);
+    AVS_CHECK(printed.str().find("ClippingPlanes honoured") != std::string::npos);
+    ours->SetBlendModeToComposite();
   }
   // Back to composite: they draw again.
   for (vtkVolumeMapper* mapper :
