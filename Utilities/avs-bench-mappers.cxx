@@ -24,7 +24,9 @@
 // while interacting, the stale ones at the still frame). --interaction-only runs this part alone.
 //
 // --clipping gives every mapper (VTK's too) three clipping planes and cropping (the fence
-// preset), so that a run with it against one without says what clipping costs per frame.
+// preset); --clipping-nothing the same tests with planes outside the volume and every cropping
+// region kept (the picture of a run without clipping), so that a run with it against one
+// without says what the clipping tests cost per frame.
 #include "ProceduralVolume.h"
 
 #include "vtkAmbientOcclusionVolumeMapper.h"
@@ -290,14 +292,14 @@ bool RunInteraction(Bench& b, int lightGrid)
 int main(int argc, char* argv[])
 {
   int voxels = 256, size = 512, frames = 10, lightGrid = 0;
-  bool interactionOnly = false, clipping = false;
+  bool interactionOnly = false, clipping = false, clipNothing = false;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h")
     {
       std::printf("Usage: avs-bench-mappers [--voxels N] [--size N] [--frames N] [--light-grid N] "
-                  "[--interaction-only] [--clipping]\n\n"
+                  "[--interaction-only] [--clipping | --clipping-nothing]\n\n"
                   "Median frame times of VTK's vtkGPUVolumeRayCastMapper and of the module's "
                   "mappers on the built-in nebula\n(N^3 voxels, default 256), N x N pixels "
                   "(default 512), over N frames (default 10), and their ratios;\nthen interactive "
@@ -305,7 +307,8 @@ int main(int argc, char* argv[])
                   "--light-grid sets the ambient-scattering mappers' LightVolumeMaximumDimension "
                   "(default: the mappers' own default).\n"
                   "--interaction-only runs the interaction scenario alone.\n"
-                  "--clipping: three clipping planes and cropping (fence) on every mapper.\n");
+                  "--clipping: three clipping planes and cropping (fence) on every mapper;\n"
+                  "--clipping-nothing: planes outside the volume, every cropping region kept.\n");
       return 0;
     }
     if (arg == "--interaction-only")
@@ -313,9 +316,10 @@ int main(int argc, char* argv[])
       interactionOnly = true;
       continue;
     }
-    if (arg == "--clipping")
+    if (arg == "--clipping" || arg == "--clipping-nothing")
     {
       clipping = true;
+      clipNothing = arg == "--clipping-nothing";
       continue;
     }
     if (i + 1 < argc &&
@@ -449,15 +453,18 @@ int main(int argc, char* argv[])
       for (const auto& p : planes)
       {
         vtkNew<vtkPlane> plane;
-        plane->SetOrigin(p[0], p[1], p[2]);
+        // Moved 3 units back along the normal, outside the volume box: nothing is cut.
+        const double back = clipNothing ? -3.0 : 0.0;
+        plane->SetOrigin(p[0] + back * p[3], p[1] + back * p[4], p[2] + back * p[5]);
         plane->SetNormal(p[3], p[4], p[5]);
         m->AddClippingPlane(plane);
       }
       m->CroppingOn();
       m->SetCroppingRegionPlanes(-0.3, 0.3, -0.3, 0.3, -0.3, 0.3);
-      m->SetCroppingRegionFlagsToFence();
+      m->SetCroppingRegionFlags(clipNothing ? 0x7ffffff : VTK_CROP_FENCE);
     }
-    std::printf("# clipping: three planes and cropping (fence) on every mapper\n");
+    std::printf("# clipping: three planes and cropping (%s) on every mapper\n",
+      clipNothing ? "outside the volume, every region kept" : "fence");
   }
 
   const auto vtkTimes = b.Measure(vtkEA);
