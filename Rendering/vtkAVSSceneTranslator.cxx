@@ -22,6 +22,9 @@
 namespace
 {
 constexpr int TableSize = 1024;
+constexpr double MinimumSpacing = 1e-30;
+constexpr double MaximumCoordinate = 1e30;
+constexpr double MaximumSamplesPerAxis = 1 << 23; // half-spacing samples: 2^24 per axis
 
 template<typename T>
 void CopyValues(const T* in, vtkIdType n, int components, float* out)
@@ -95,6 +98,41 @@ bool vtkAVSSceneTranslator::ToGrid(vtkImageData* image, avs::Grid& grid, std::st
     if (!std::isfinite(origin[a]))
     {
       error = "the image origin is not finite";
+      return false;
+    }
+  }
+  // Geometry the renderers can compute with (the GPU in single precision): spacing within
+  // [1e-30, 1e30], the box within +-1e30, and rays of at most 2^24 samples of half the smallest
+  // spacing (the casts of step counts to int are undefined beyond that, and no ray needs it).
+  {
+    double lo = spacing[0], extent = 0.0;
+    int e[6];
+    image->GetExtent(e);
+    for (int a = 0; a < 3; ++a)
+    {
+      lo = std::min(lo, spacing[a]);
+      const double reach = std::max(std::abs(static_cast<double>(e[2 * a])),
+                             std::abs(static_cast<double>(e[2 * a + 1]))) *
+        spacing[a];
+      extent = std::max(extent, (dims[a] - 1) * spacing[a]);
+      if (!(spacing[a] >= MinimumSpacing && spacing[a] <= MaximumCoordinate) ||
+        !(std::abs(origin[a]) + reach <= MaximumCoordinate))
+      {
+        std::ostringstream os;
+        os << "the image's geometry (spacing " << spacing[0] << ", " << spacing[1] << ", "
+           << spacing[2] << ", origin " << origin[0] << ", " << origin[1] << ", " << origin[2]
+           << ") is outside [1e-30, 1e30]";
+        error = os.str();
+        return false;
+      }
+    }
+    if (!(extent / lo <= MaximumSamplesPerAxis))
+    {
+      std::ostringstream os;
+      os << "the image is more than " << MaximumSamplesPerAxis
+         << " times as long as its smallest spacing (spacing " << spacing[0] << ", " << spacing[1]
+         << ", " << spacing[2] << "): rays would take too many samples";
+      error = os.str();
       return false;
     }
   }

@@ -32,7 +32,9 @@ public:
   /// Checks image data and copies its active point scalars (one component) into `grid`.
   /// Returns false with a message in `error` for: no image, an empty image, no point scalars,
   /// a component count other than 1, NaN or infinite values, non-finite or non-positive
-  /// spacing, a non-finite origin, a direction matrix that is not orthonormal, too many voxels.
+  /// spacing, a non-finite origin, a direction matrix that is not orthonormal, too many voxels,
+  /// a spacing outside [1e-30, 1e30] or a box beyond +-1e30 (single precision on the GPU), an
+  /// image more than 2^23 times as long as its smallest spacing (rays of over 2^24 samples).
   static bool ToGrid(vtkImageData* image, avs::Grid& grid, std::string& error);
 
   /// Samples the colour and scalar-opacity functions of component 0 over [lo, hi].

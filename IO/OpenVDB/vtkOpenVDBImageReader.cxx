@@ -1,5 +1,7 @@
 #include "vtkOpenVDBImageReader.h"
 
+#include "OpenVDBCheckedArchive.h"
+
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -13,13 +15,14 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
-#include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Dense.h>
 #include <openvdb/tools/LevelSetUtil.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <sstream>
@@ -30,11 +33,15 @@ vtkStandardNewMacro(vtkOpenVDBImageReader);
 
 namespace
 {
+// The largest downsampling factor chosen automatically (MaximumNumberOfVoxels).
+constexpr int MaximumAutomaticDownsampling = 16;
+
 struct GridInfo
 {
   std::string Name, Class, ValueType;
   double VoxelSize[3] = { 0, 0, 0 };
   int Box[6] = { 0, -1, 0, -1, 0, -1 };
+  std::size_t Entry = 0; ///< index in the file
 };
 
 /// Where the output sits and how it is sampled.
@@ -91,11 +98,15 @@ void InitialiseOpenVDB()
   std::call_once(OpenVDBInitialised, [] { openvdb::initialize(); });
 }
 
-// The copy of a typed grid's box into the output array, slab by slab, averaging f^3 blocks.
+// Values per chunk of the copy: memory stays bounded whatever the box.
+constexpr std::int64_t ChunkValues = std::int64_t(1) << 22;
+
+// The copy of a typed grid's box into the output array, averaging f^3 blocks: one output
+// z-slab at a time, in chunks of whole blocks (the whole slab when it fits ChunkValues).
 // `Out` is the VTK array's value type; `components` 1 or 3; `convert` maps a grid value to
-// `components` output values.
+// `components` output values. Returns false when a value is NaN or infinite.
 template<typename GridT, typename Out, typename Convert>
-void CopyGrid(const GridT& grid,
+bool CopyGrid(const GridT& grid,
   const Layout& L,
   Out* out,
   int components,
@@ -105,62 +116,79 @@ void CopyGrid(const GridT& grid,
   using ValueT = typename GridT::ValueType;
   const openvdb::Coord lo = L.Box.min();
   const openvdb::Coord hi = L.Box.max();
-  const int f = L.Factor;
-  const int nx = L.Dimensions[0], ny = L.Dimensions[1], nz = L.Dimensions[2];
-  const int sx = hi.x() - lo.x() + 1, sy = hi.y() - lo.y() + 1;
-  // A plain array: std::vector<bool> has no data().
-  std::unique_ptr<ValueT[]> slab(new ValueT[static_cast<std::size_t>(sx) * sy * f]);
-  std::vector<double> sum(static_cast<std::size_t>(nx) * ny * components);
-  std::vector<int> count(static_cast<std::size_t>(nx) * ny);
-  double values[3];
-  for (int kz = 0; kz < nz; ++kz)
+  const std::int64_t f = L.Factor;
+  const std::int64_t nx = L.Dimensions[0], ny = L.Dimensions[1], nz = L.Dimensions[2];
+  const std::int64_t block = f * f * f;
+  // Chunk: cx x cy output voxels of one z-slab.
+  std::int64_t cx = nx, cy = 1;
+  if (nx * block > ChunkValues)
   {
-    const int z0 = lo.z() + kz * f;
-    const int z1 = std::min(hi.z(), z0 + f - 1);
-    const openvdb::CoordBBox slabBox(
-      openvdb::Coord(lo.x(), lo.y(), z0), openvdb::Coord(hi.x(), hi.y(), z1));
-    openvdb::tools::Dense<ValueT, openvdb::tools::LayoutXYZ> dense(slabBox, slab.get());
-    openvdb::tools::copyToDense(grid, dense); // multi-threaded
-    const std::size_t planeOut = static_cast<std::size_t>(nx) * ny;
-    if (f == 1)
+    cx = std::max<std::int64_t>(1, ChunkValues / block);
+  }
+  else
+  {
+    cy = std::max<std::int64_t>(1, std::min(ny, ChunkValues / (nx * block)));
+  }
+  // A plain array: std::vector<bool> has no data().
+  std::unique_ptr<ValueT[]> chunk(new ValueT[static_cast<std::size_t>(cx * cy * block)]);
+  std::vector<double> sum(static_cast<std::size_t>(cx * cy * components));
+  std::vector<std::int64_t> count(static_cast<std::size_t>(cx * cy));
+  double values[3];
+  bool finite = true;
+  for (std::int64_t kz = 0; kz < nz; ++kz)
+  {
+    const std::int64_t z0 = lo.z() + kz * f;
+    const std::int64_t z1 = std::min<std::int64_t>(hi.z(), z0 + f - 1);
+    for (std::int64_t jy = 0; jy < ny; jy += cy)
     {
-      for (std::size_t p = 0; p < planeOut; ++p)
+      const std::int64_t y0 = lo.y() + jy * f;
+      const std::int64_t y1 = std::min<std::int64_t>(hi.y(), y0 + cy * f - 1);
+      for (std::int64_t ix = 0; ix < nx; ix += cx)
       {
-        convert(slab[p], values);
-        for (int c = 0; c < components; ++c)
-        {
-          out[(kz * planeOut + p) * components + c] = static_cast<Out>(values[c]);
-        }
-      }
-    }
-    else
-    {
-      std::fill(sum.begin(), sum.end(), 0.0);
-      std::fill(count.begin(), count.end(), 0);
-      const int depth = z1 - z0 + 1;
-      for (int z = 0; z < depth; ++z)
-        for (int y = 0; y < sy; ++y)
-          for (int x = 0; x < sx; ++x)
+        const std::int64_t x0 = lo.x() + ix * f;
+        const std::int64_t x1 = std::min<std::int64_t>(hi.x(), x0 + cx * f - 1);
+        const openvdb::CoordBBox box(openvdb::Coord(static_cast<openvdb::Int32>(x0),
+                                       static_cast<openvdb::Int32>(y0),
+                                       static_cast<openvdb::Int32>(z0)),
+          openvdb::Coord(static_cast<openvdb::Int32>(x1),
+            static_cast<openvdb::Int32>(y1),
+            static_cast<openvdb::Int32>(z1)));
+        openvdb::tools::Dense<ValueT, openvdb::tools::LayoutXYZ> dense(box, chunk.get());
+        openvdb::tools::copyToDense(grid, dense); // multi-threaded
+        const std::int64_t bx = x1 - x0 + 1, by = y1 - y0 + 1, bz = z1 - z0 + 1;
+        const std::int64_t ox = (bx + f - 1) / f, oy = (by + f - 1) / f;
+        std::fill(sum.begin(), sum.end(), 0.0);
+        std::fill(count.begin(), count.end(), 0);
+        for (std::int64_t z = 0; z < bz; ++z)
+          for (std::int64_t y = 0; y < by; ++y)
+            for (std::int64_t x = 0; x < bx; ++x)
+            {
+              convert(chunk[static_cast<std::size_t>((z * by + y) * bx + x)], values);
+              const std::size_t o = static_cast<std::size_t>((y / f) * ox + x / f);
+              for (int c = 0; c < components; ++c)
+              {
+                finite = finite && std::isfinite(values[c]);
+                sum[o * components + c] += values[c];
+              }
+              ++count[o];
+            }
+        for (std::int64_t y = 0; y < oy; ++y)
+          for (std::int64_t x = 0; x < ox; ++x)
           {
-            convert(slab[(static_cast<std::size_t>(z) * sy + y) * sx + x], values);
-            const std::size_t o = static_cast<std::size_t>(y / f) * nx + x / f;
+            const std::size_t o = static_cast<std::size_t>(y * ox + x);
+            const std::size_t p = static_cast<std::size_t>((kz * ny + jy + y) * nx + ix + x);
             for (int c = 0; c < components; ++c)
             {
-              sum[o * components + c] += values[c];
+              // f == 1: a single value, copied exactly (integers stay exact).
+              out[p * components + c] = static_cast<Out>(
+                count[o] == 1 ? sum[o * components + c] : sum[o * components + c] / count[o]);
             }
-            ++count[o];
           }
-      for (std::size_t p = 0; p < planeOut; ++p)
-      {
-        for (int c = 0; c < components; ++c)
-        {
-          out[(kz * planeOut + p) * components + c] =
-            static_cast<Out>(count[p] ? sum[p * components + c] / count[p] : 0.0);
-        }
       }
     }
     self->UpdateProgress(static_cast<double>(kz + 1) / nz);
   }
+  return finite;
 }
 } // namespace
 
@@ -186,11 +214,7 @@ bool vtkOpenVDBImageReader::CanReadFile(const char* fileName)
   InitialiseOpenVDB();
   try
   {
-    openvdb::io::File file(fileName);
-    file.open(false);
-    const bool any = file.beginName() != file.endName();
-    file.close();
-    return any;
+    return !avs::OpenVDBCheckedArchive(fileName).GetEntries().empty();
   }
   catch (...)
   {
@@ -265,27 +289,36 @@ int vtkOpenVDBImageReader::RequestInformation(vtkInformation*,
   std::string chosen;
   try
   {
-    openvdb::io::File file(this->FileName);
-    file.open(false);
-    openvdb::GridPtrVecPtr metas = file.readAllGridMetadata();
-    for (const auto& grid : *metas)
+    // Every grid's descriptor, metadata and transform, checked against the file (a truncated
+    // or corrupt file fails here or when the grid is read, never with a partial volume).
+    avs::OpenVDBCheckedArchive archive(this->FileName);
+    const auto& entries = archive.GetEntries();
+    // Listed by name, as OpenVDB's io::File lists them.
+    std::vector<std::size_t> order(entries.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
     {
+      order[i] = i;
+    }
+    std::stable_sort(order.begin(),
+      order.end(),
+      [&](std::size_t a, std::size_t b)
+      { return entries[a].Descriptor.gridName() < entries[b].Descriptor.gridName(); });
+    for (std::size_t i : order)
+    {
+      const openvdb::GridBase& grid = *entries[i].Grid;
       GridInfo info;
-      info.Name = grid->getName();
-      info.Class = ClassName(grid->getGridClass());
-      info.ValueType = grid->valueType();
-      if (grid->saveFloatAsHalf() && info.ValueType == "float")
-      {
-        info.ValueType = "float"; // stored as half, read as float
-      }
-      const openvdb::Vec3d v = grid->voxelSize();
+      info.Name = grid.getName();
+      info.Class = ClassName(grid.getGridClass());
+      info.ValueType = grid.valueType();
+      info.Entry = i;
+      const openvdb::Vec3d v = grid.voxelSize();
       for (int a = 0; a < 3; ++a)
       {
         info.VoxelSize[a] = v[a];
       }
-      if (auto lo = grid->getMetadata<openvdb::Vec3IMetadata>("file_bbox_min"))
+      if (auto lo = grid.getMetadata<openvdb::Vec3IMetadata>("file_bbox_min"))
       {
-        if (auto hi = grid->getMetadata<openvdb::Vec3IMetadata>("file_bbox_max"))
+        if (auto hi = grid.getMetadata<openvdb::Vec3IMetadata>("file_bbox_max"))
         {
           for (int a = 0; a < 3; ++a)
           {
@@ -298,14 +331,20 @@ int vtkOpenVDBImageReader::RequestInformation(vtkInformation*,
     }
     if (in.Grids.empty())
     {
-      file.close();
       return fail("the file holds no grids");
     }
+    const GridInfo* selected = nullptr;
     if (this->GridName && *this->GridName)
     {
       chosen = this->GridName;
-      if (std::none_of(
-            in.Grids.begin(), in.Grids.end(), [&](const GridInfo& g) { return g.Name == chosen; }))
+      for (const auto& g : in.Grids)
+      {
+        if (!selected && (g.Name == chosen || entries[g.Entry].Descriptor.uniqueName() == chosen))
+        {
+          selected = &g;
+        }
+      }
+      if (!selected)
       {
         std::ostringstream os;
         os << "no grid named '" << chosen << "' (the file has:";
@@ -314,7 +353,6 @@ int vtkOpenVDBImageReader::RequestInformation(vtkInformation*,
           os << " '" << g.Name << "'";
         }
         os << ")";
-        file.close();
         return fail(os.str());
       }
     }
@@ -325,19 +363,23 @@ int vtkOpenVDBImageReader::RequestInformation(vtkInformation*,
       auto scalar = std::find_if(in.Grids.begin(),
         in.Grids.end(),
         [](const GridInfo& g) { return IsScalarType(g.ValueType); });
-      chosen = density != in.Grids.end()
-        ? density->Name
-        : (scalar != in.Grids.end() ? scalar->Name : in.Grids.front().Name);
+      selected = density != in.Grids.end()
+        ? &*density
+        : (scalar != in.Grids.end() ? &*scalar : &in.Grids.front());
+      chosen = selected->Name;
     }
-    in.Grid = file.readGrid(chosen);
-    file.close();
+    in.Grid = archive.ReadGrid(selected->Entry);
   }
   catch (const std::exception& e)
   {
-    return fail(std::string("not a readable OpenVDB file (") + e.what() + ")");
+    in.Grids.clear();
+    in.Grid.reset();
+    return fail(e.what());
   }
   catch (...)
   {
+    in.Grids.clear();
+    in.Grid.reset();
     return fail("not a readable OpenVDB file");
   }
   const std::string type = in.Grid->valueType();
@@ -376,24 +418,53 @@ int vtkOpenVDBImageReader::RequestInformation(vtkInformation*,
       return fail("grid '" + chosen + "' has no active voxels");
     }
   }
-  const openvdb::Coord extent = L.Box.dim();
-  const double voxels = static_cast<double>(extent.x()) * extent.y() * extent.z();
-  L.Factor = this->DownsamplingFactor;
-  while (voxels / std::pow(static_cast<double>(L.Factor), 3) >
-    static_cast<double>(this->MaximumNumberOfVoxels))
+  // 64-bit: a box may span the whole 32-bit index range.
+  const std::int64_t extent[3] = { static_cast<std::int64_t>(L.Box.max().x()) - L.Box.min().x() + 1,
+    static_cast<std::int64_t>(L.Box.max().y()) - L.Box.min().y() + 1,
+    static_cast<std::int64_t>(L.Box.max().z()) - L.Box.min().z() + 1 };
+  const double voxels = static_cast<double>(extent[0]) * extent[1] * extent[2];
+  const double maximum = static_cast<double>(this->MaximumNumberOfVoxels);
+  auto tooMany = [&](std::int64_t f)
+  { return voxels / std::pow(static_cast<double>(f), 3) > maximum; };
+  std::int64_t factor = this->DownsamplingFactor;
+  if (tooMany(factor))
   {
-    ++L.Factor;
+    factor = std::max<std::int64_t>(factor, static_cast<std::int64_t>(std::cbrt(voxels / maximum)));
+    while (tooMany(factor))
+    {
+      ++factor;
+    }
   }
+  // Averaging reads every voxel of the box: more than 16^3 voxels per output voxel is refused
+  // unless DownsamplingFactor asks for it.
+  if (factor > std::max(MaximumAutomaticDownsampling, this->DownsamplingFactor))
+  {
+    std::ostringstream os;
+    os << "grid '" << chosen << "' spans " << extent[0] << " x " << extent[1] << " x " << extent[2]
+       << " voxels (" << (this->UseBoundingBox ? "the bounding box" : "its active voxels")
+       << "): that needs blocks of " << factor << "^3 voxels averaged, more than "
+       << MaximumAutomaticDownsampling << "^3; set a BoundingBox, a larger MaximumNumberOfVoxels "
+       << "or DownsamplingFactor";
+    in.Grid.reset();
+    return fail(os.str());
+  }
+  L.Factor = static_cast<int>(factor);
   if (L.Factor > this->DownsamplingFactor)
   {
-    vtkWarningMacro("Grid '" << chosen << "' has " << extent.x() << " x " << extent.y() << " x "
-                             << extent.z() << " voxels, more than MaximumNumberOfVoxels ("
+    vtkWarningMacro("Grid '" << chosen << "' has " << extent[0] << " x " << extent[1] << " x "
+                             << extent[2] << " voxels, more than MaximumNumberOfVoxels ("
                              << this->MaximumNumberOfVoxels << "): averaging blocks of " << L.Factor
                              << "^3 voxels.");
   }
   for (int a = 0; a < 3; ++a)
   {
-    L.Dimensions[a] = (extent[a] + L.Factor - 1) / L.Factor;
+    const std::int64_t n = (extent[a] + L.Factor - 1) / L.Factor;
+    if (n > std::numeric_limits<int>::max() / 2)
+    {
+      in.Grid.reset();
+      return fail("grid '" + chosen + "' is too long along an axis for image data");
+    }
+    L.Dimensions[a] = static_cast<int>(n);
   }
 
   // Index -> world: columns of the linear map give spacing and direction.
@@ -408,7 +479,7 @@ int vtkOpenVDBImageReader::RequestInformation(vtkInformation*,
       openvdb::Vec3d(L.Box.min().x(), L.Box.min().y(), L.Box.min().z()) + step);
     const openvdb::Vec3d d = p - o;
     const double length = d.length();
-    if (!(length > 0.0) || !std::isfinite(length))
+    if (!(length > 0.0) || !std::isfinite(length) || !std::isfinite(o[a]))
     {
       in.Grid.reset();
       return fail("grid '" + chosen + "' has a degenerate transform");
@@ -483,6 +554,7 @@ int vtkOpenVDBImageReader::RequestData(vtkInformation*,
   const std::string type = in.Grid->valueType();
   const bool averaged = L.Factor > 1;
   this->UpdateProgress(0.0);
+  bool finite = true;
   try
   {
     vtkSmartPointer<vtkDataArray> array;
@@ -497,7 +569,7 @@ int vtkOpenVDBImageReader::RequestData(vtkInformation*,
       }
       auto a = vtkSmartPointer<vtkFloatArray>::New();
       a->SetNumberOfTuples(n);
-      CopyGrid(*grid, L, a->GetPointer(0), 1, scalar, this);
+      finite = CopyGrid(*grid, L, a->GetPointer(0), 1, scalar, this);
       array = a;
     }
     else if (type == "double")
@@ -510,7 +582,7 @@ int vtkOpenVDBImageReader::RequestData(vtkInformation*,
       }
       auto a = vtkSmartPointer<vtkDoubleArray>::New();
       a->SetNumberOfTuples(n);
-      CopyGrid(*grid, L, a->GetPointer(0), 1, scalar, this);
+      finite = CopyGrid(*grid, L, a->GetPointer(0), 1, scalar, this);
       array = a;
     }
     else if (type == "int32")
@@ -520,14 +592,14 @@ int vtkOpenVDBImageReader::RequestData(vtkInformation*,
       {
         auto a = vtkSmartPointer<vtkFloatArray>::New();
         a->SetNumberOfTuples(n);
-        CopyGrid(*grid, L, a->GetPointer(0), 1, scalar, this);
+        finite = CopyGrid(*grid, L, a->GetPointer(0), 1, scalar, this);
         array = a;
       }
       else
       {
         auto a = vtkSmartPointer<vtkIntArray>::New();
         a->SetNumberOfTuples(n);
-        CopyGrid(*grid, L, a->GetPointer(0), 1, scalar, this);
+        finite = CopyGrid(*grid, L, a->GetPointer(0), 1, scalar, this);
         array = a;
       }
     }
@@ -539,14 +611,14 @@ int vtkOpenVDBImageReader::RequestData(vtkInformation*,
       {
         auto a = vtkSmartPointer<vtkFloatArray>::New();
         a->SetNumberOfTuples(n);
-        CopyGrid(*grid, L, a->GetPointer(0), 1, boolean, this);
+        finite = CopyGrid(*grid, L, a->GetPointer(0), 1, boolean, this);
         array = a;
       }
       else
       {
         auto a = vtkSmartPointer<vtkUnsignedCharArray>::New();
         a->SetNumberOfTuples(n);
-        CopyGrid(*grid, L, a->GetPointer(0), 1, boolean, this);
+        finite = CopyGrid(*grid, L, a->GetPointer(0), 1, boolean, this);
         array = a;
       }
     }
@@ -572,7 +644,7 @@ int vtkOpenVDBImageReader::RequestData(vtkInformation*,
       a->SetNumberOfTuples(n);
       if (type == "vec3s")
       {
-        CopyGrid(*openvdb::gridPtrCast<openvdb::Vec3SGrid>(in.Grid),
+        finite = CopyGrid(*openvdb::gridPtrCast<openvdb::Vec3SGrid>(in.Grid),
           L,
           a->GetPointer(0),
           components,
@@ -581,7 +653,7 @@ int vtkOpenVDBImageReader::RequestData(vtkInformation*,
       }
       else
       {
-        CopyGrid(*openvdb::gridPtrCast<openvdb::Vec3DGrid>(in.Grid),
+        finite = CopyGrid(*openvdb::gridPtrCast<openvdb::Vec3DGrid>(in.Grid),
           L,
           a->GetPointer(0),
           components,
@@ -591,17 +663,27 @@ int vtkOpenVDBImageReader::RequestData(vtkInformation*,
       array = a;
     }
     array->SetName(in.GridKey.c_str());
-    output->GetPointData()->SetScalars(array);
+    if (finite)
+    {
+      output->GetPointData()->SetScalars(array);
+    }
+    else
+    {
+      output->Initialize();
+      vtkErrorMacro("Cannot read '" << this->FileName << "': grid '" << in.GridKey
+                                    << "' holds NaN or infinite values (a corrupt leaf buffer?)");
+    }
   }
   catch (const std::exception& e)
   {
     output->Initialize();
-    vtkErrorMacro("Cannot read grid '" << in.GridKey << "': " << e.what());
+    vtkErrorMacro(
+      "Cannot read '" << this->FileName << "': grid '" << in.GridKey << "': " << e.what());
   }
   catch (...)
   {
     output->Initialize();
-    vtkErrorMacro("Cannot read grid '" << in.GridKey << "'.");
+    vtkErrorMacro("Cannot read '" << this->FileName << "': grid '" << in.GridKey << "'.");
   }
   this->UpdateProgress(1.0);
   return 1;

@@ -116,6 +116,9 @@ bool Precompute(const VolumeScene& scene,
 namespace
 {
 
+// The most samples one ray takes.
+constexpr int MaximumRaySamples = 1 << 26;
+
 // One ray, front to back. Returns premultiplied L and alpha.
 void CastRay(const VolumeScene& scene,
   const ScatteringParameters& p,
@@ -143,10 +146,19 @@ void CastRay(const VolumeScene& scene,
   {
     return;
   }
-  const int n = std::max(1, static_cast<int>(std::ceil((t1 - t0) / p.SampleDistance - 1e-9)));
+  // Counted in double and capped before the int cast (undefined beyond int's range); the
+  // translator refuses images whose rays would need anywhere near the cap.
+  const double steps = std::ceil((t1 - t0) / p.SampleDistance - 1e-9);
+  const int n =
+    steps >= 1.0 ? static_cast<int>(std::min(steps, static_cast<double>(MaximumRaySamples))) : 1;
   const double dt = (t1 - t0) / n;
-  // Ambient scattering's look-ahead r = (lag + fraction) steps.
-  const double lagSteps = p.AmbientRadius / dt;
+  // Ambient scattering's look-ahead r = (lag + fraction) steps; beyond the ray's n steps it
+  // changes nothing, so it is capped there.
+  double lagSteps = p.AmbientRadius / dt;
+  if (!(lagSteps < n))
+  {
+    lagSteps = n;
+  }
   const int lag = static_cast<int>(std::floor(lagSteps));
   const double fraction = lagSteps - lag;
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -31,7 +31,8 @@ inline void Split(double c, int n, int& i0, double& f)
     f = 0.0;
     return;
   }
-  c = std::clamp(c, 0.0, static_cast<double>(n - 1));
+  // NaN takes the first node (std::clamp passes NaN through, and its int cast is undefined).
+  c = c > 0.0 ? std::min(c, static_cast<double>(n - 1)) : 0.0;
   i0 = std::min(static_cast<int>(c), n - 2);
   f = c - i0;
 }
