@@ -498,6 +498,9 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
   if (!this->Prepare(renderer, volume))
   {
+    // Nothing of a volume that could not be prepared stays on the GPU (one that does not fit
+    // gets one error, and the next starts from nothing).
+    this->ReleaseGraphicsResources(window);
     return;
   }
   vtkAVSRayCaster::Frame frame;
