@@ -102,9 +102,42 @@ OpenVDBCheckedArchive::OpenVDBCheckedArchive(const std::string& fileName)
       else
       {
         // Written to a stream that could not seek: no offsets, the grids are read in turn.
+        // Its header first (as for the others), then its tree walked to where it ends.
+        const std::int64_t start = this->Position();
+        this->ScanGridHeader(gd, this->Size);
+        if (this->fileVersion() >= openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION)
+        {
+          entry.Compression = this->ReadU32(this->Size);
+          this->Stream.seekg(start);
+        }
+        readGridCompression(this->Stream);
+        openvdb::GridBase::Ptr header = openvdb::GridBase::createGrid(gd.gridType());
+        header->readMeta(this->Stream);
+        OpenVDBTreeLayout layout;
+        layout.GridType = gd.gridType();
+        layout.SaveFloatAsHalf = gd.saveFloatAsHalf();
+        layout.Compression = entry.Compression;
+        layout.FileVersion = this->fileVersion();
+        if (this->fileVersion() >= openvdb::OPENVDB_FILE_VERSION_GRID_INSTANCING &&
+          !gd.isInstance())
+        {
+          header->readTransform(this->Stream);
+          if (IsCheckableOpenVDBTree(layout))
+          {
+            try
+            {
+              CheckOpenVDBTree(this->Stream, this->Position(), -1, this->Size, layout);
+            }
+            catch (const std::runtime_error& e)
+            {
+              this->Fail("grid '" + gd.gridName() + "': " + e.what());
+            }
+          }
+        }
+        this->Stream.clear();
+        this->Stream.seekg(start);
         entry.Grid = openvdb::GridBase::createGrid(gd.gridType());
         entry.Grid->setSaveFloatAsHalf(gd.saveFloatAsHalf());
-        this->ScanGridHeader(gd, this->Size);
         Archive::readGrid(entry.Grid, gd, this->Stream);
       }
       this->Entries.push_back(entry);

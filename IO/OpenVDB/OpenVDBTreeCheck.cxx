@@ -75,7 +75,7 @@ public:
     this->Stream.seekg(begin);
   }
 
-  void Tree()
+  std::int64_t Tree()
   {
     this->Skip(4, "buffer count");
     // Root (file format 213 and later): background, tile and child counts, tiles, children.
@@ -117,7 +117,7 @@ public:
       }
       this->Internal(5, leavesOf[origin]);
     }
-    if (this->Position != this->BuffersBegin)
+    if (this->BuffersBegin >= 0 && this->Position != this->BuffersBegin)
     {
       this->Fail("the topology ends at byte " + std::to_string(this->Position) +
         ", the descriptor's buffers begin at " + std::to_string(this->BuffersBegin));
@@ -138,11 +138,12 @@ public:
         }
       }
     }
-    if (this->Position != this->End)
+    if (this->BuffersBegin >= 0 && this->Position != this->End)
     {
       this->Fail("the tree ends at byte " + std::to_string(this->Position) +
         ", its descriptor says " + std::to_string(this->End));
     }
+    return this->Position;
   }
 
 private:
@@ -340,7 +341,7 @@ bool IsCheckableOpenVDBTree(const OpenVDBTreeLayout& layout)
     ValueLayoutOf(layout, v);
 }
 
-void CheckOpenVDBTree(std::istream& is,
+std::int64_t CheckOpenVDBTree(std::istream& is,
   std::int64_t begin,
   std::int64_t block,
   std::int64_t end,
@@ -351,7 +352,7 @@ void CheckOpenVDBTree(std::istream& is,
   {
     throw std::runtime_error("no tree check for grids of type '" + layout.GridType + "'");
   }
-  Walker(is, begin, block, end, layout, v).Tree();
+  return Walker(is, begin, block, end, layout, v).Tree();
 }
 
 } // namespace avs

@@ -31,9 +31,10 @@ struct OpenVDBTreeLayout
 };
 
 /// Walks the tree that starts at `begin` (after the grid's transform), whose buffers must begin
-/// at `block` and end exactly at `end` (the descriptor's offsets). Throws std::runtime_error
-/// with what is wrong; leaves the stream anywhere.
-void CheckOpenVDBTree(std::istream& is,
+/// at `block` and end exactly at `end` (the descriptor's offsets); with `block` < 0 (a file
+/// without offsets) `end` only bounds it. Returns where the tree ends. Throws
+/// std::runtime_error with what is wrong; leaves the stream anywhere.
+std::int64_t CheckOpenVDBTree(std::istream& is,
   std::int64_t begin,
   std::int64_t block,
   std::int64_t end,
