@@ -17,6 +17,7 @@
 #include "TransferFunction.h"
 
 #include "vtkSmartPointer.h"
+#include "vtkWeakPointer.h"
 
 #include <memory>
 #include <string>
@@ -154,7 +155,9 @@ private:
   void CaptureDepth(int x, int y, int width, int height);
   unsigned int BuildComputeProgram(const char* source, const char* what);
 
-  vtkOpenGLRenderWindow* Window = nullptr;
+  /// Weak: a window may go before the mapper that drew in it (its context takes the GL
+  /// objects with it; the mapper's later release must not touch it).
+  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   vtkSmartPointer<vtkTextureObject> Scalars, Transfer, Occlusion, Table, Depth;
   std::vector<float> LogGain; ///< log(F(tau) exp(2 tau)) on the table's tau nodes
   /// Data grid, for ambient scattering: .r scalar, .g averaged sigma_t at the voxel.
