@@ -190,20 +190,19 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
   this->Quad.reset();
   this->QuadMode = -1;
   this->QuadDefines.clear();
-  if (window)
+  // Without a window (it was destroyed, and its context with the programs) the names are only
+  // forgotten: they must not be used in the next context.
+  for (unsigned int* program :
+    { &this->ComputeProgram, &this->OcclusionProgram, &this->AverageProgram })
   {
-    for (unsigned int* program :
-      { &this->ComputeProgram, &this->OcclusionProgram, &this->AverageProgram })
+    if (*program && window)
     {
-      if (*program)
-      {
-        glDeleteProgram(*program);
-      }
-      *program = 0;
+      glDeleteProgram(*program);
     }
-    this->ComputeSupport = -1; // asked again in the next context
-    this->SoftwareRenderer = -1;
+    *program = 0;
   }
+  this->ComputeSupport = -1; // asked again in the next context
+  this->SoftwareRenderer = -1;
   if (window == this->Window)
   {
     this->Window = nullptr;
