@@ -586,6 +586,9 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   const bool interactive = adjust && allocated < 1.0;
   if (!this->Prepare(renderer, volume, interactive))
   {
+    // Nothing of a volume that could not be prepared stays on the GPU (one that does not fit
+    // gets one error, and the next starts from nothing).
+    this->ReleaseGraphicsResources(window);
     return;
   }
   blend.ScalarRange[0] = in.Transfer.Minimum;

@@ -192,6 +192,12 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
     vtkErrorMacro("Cannot render: no camera (set Camera or Renderer).");
     return 1;
   }
+  const std::string cameraProblem = vtkAVSSceneTranslator::ToCamera(camera).Validate();
+  if (!cameraProblem.empty())
+  {
+    vtkErrorMacro("Cannot render: " << cameraProblem << ".");
+    return 1;
+  }
   scene.Lights = vtkAVSSceneTranslator::ToLights(this->Renderer, camera, this->LightScale);
   scene.Background = { this->Background[0], this->Background[1], this->Background[2] };
 

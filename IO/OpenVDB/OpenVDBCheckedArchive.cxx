@@ -1,4 +1,5 @@
 #include "OpenVDBCheckedArchive.h"
+#include "OpenVDBTreeCheck.h"
 
 #include <openvdb/Metadata.h>
 #include <openvdb/io/DelayedLoadMetadata.h>
@@ -101,9 +102,42 @@ OpenVDBCheckedArchive::OpenVDBCheckedArchive(const std::string& fileName)
       else
       {
         // Written to a stream that could not seek: no offsets, the grids are read in turn.
+        // Its header first (as for the others), then its tree walked to where it ends.
+        const std::int64_t start = this->Position();
+        this->ScanGridHeader(gd, this->Size);
+        if (this->fileVersion() >= openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION)
+        {
+          entry.Compression = this->ReadU32(this->Size);
+          this->Stream.seekg(start);
+        }
+        readGridCompression(this->Stream);
+        openvdb::GridBase::Ptr header = openvdb::GridBase::createGrid(gd.gridType());
+        header->readMeta(this->Stream);
+        OpenVDBTreeLayout layout;
+        layout.GridType = gd.gridType();
+        layout.SaveFloatAsHalf = gd.saveFloatAsHalf();
+        layout.Compression = entry.Compression;
+        layout.FileVersion = this->fileVersion();
+        if (this->fileVersion() >= openvdb::OPENVDB_FILE_VERSION_GRID_INSTANCING &&
+          !gd.isInstance())
+        {
+          header->readTransform(this->Stream);
+          if (IsCheckableOpenVDBTree(layout))
+          {
+            try
+            {
+              CheckOpenVDBTree(this->Stream, this->Position(), -1, this->Size, layout);
+            }
+            catch (const std::runtime_error& e)
+            {
+              this->Fail("grid '" + gd.gridName() + "': " + e.what());
+            }
+          }
+        }
+        this->Stream.clear();
+        this->Stream.seekg(start);
         entry.Grid = openvdb::GridBase::createGrid(gd.gridType());
         entry.Grid->setSaveFloatAsHalf(gd.saveFloatAsHalf());
-        this->ScanGridHeader(gd, this->Size);
         Archive::readGrid(entry.Grid, gd, this->Stream);
       }
       this->Entries.push_back(entry);
@@ -153,7 +187,7 @@ openvdb::GridBase::Ptr OpenVDBCheckedArchive::ReadGrid(std::size_t index)
   {
     openvdb::GridBase::Ptr grid = openvdb::GridBase::createGrid(gd.gridType());
     grid->setSaveFloatAsHalf(gd.saveFloatAsHalf());
-    this->ReadTree(gd, grid);
+    this->ReadTree(entry, grid);
     if (gd.isInstance())
     {
       const Entry* parent = nullptr;
@@ -170,7 +204,7 @@ openvdb::GridBase::Ptr OpenVDBCheckedArchive::ReadGrid(std::size_t index)
       }
       openvdb::GridBase::Ptr source = openvdb::GridBase::createGrid(parent->Descriptor.gridType());
       source->setSaveFloatAsHalf(parent->Descriptor.saveFloatAsHalf());
-      this->ReadTree(parent->Descriptor, source);
+      this->ReadTree(*parent, source);
       grid->setTree(source->baseTreePtr());
     }
     return grid;
@@ -191,9 +225,25 @@ openvdb::GridBase::Ptr OpenVDBCheckedArchive::ReadGrid(std::size_t index)
   }
 }
 
-void OpenVDBCheckedArchive::ReadTree(const openvdb::io::GridDescriptor& gd,
-  openvdb::GridBase::Ptr grid)
+void OpenVDBCheckedArchive::ReadTree(const Entry& entry, openvdb::GridBase::Ptr grid)
 {
+  const openvdb::io::GridDescriptor& gd = entry.Descriptor;
+  OpenVDBTreeLayout layout;
+  layout.GridType = gd.gridType();
+  layout.SaveFloatAsHalf = gd.saveFloatAsHalf();
+  layout.Compression = entry.Compression;
+  layout.FileVersion = this->fileVersion();
+  if (!gd.isInstance() && entry.TreePosition >= 0 && IsCheckableOpenVDBTree(layout))
+  {
+    try
+    {
+      CheckOpenVDBTree(this->Stream, entry.TreePosition, gd.getBlockPos(), gd.getEndPos(), layout);
+    }
+    catch (const std::runtime_error& e)
+    {
+      this->Fail("grid '" + gd.gridName() + "': " + e.what());
+    }
+  }
   this->Stream.seekg(gd.getGridPos());
   Archive::readGrid(grid, gd, this->Stream);
   const std::int64_t end = this->Position();
@@ -213,6 +263,11 @@ void OpenVDBCheckedArchive::ReadGridHeader(Entry& entry)
   openvdb::GridBase::Ptr grid = openvdb::GridBase::createGrid(gd.gridType());
   grid->setSaveFloatAsHalf(gd.saveFloatAsHalf());
   // What io::File::readGridPartial reads for the metadata: compression, metadata, transform.
+  if (this->fileVersion() >= openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION)
+  {
+    entry.Compression = this->ReadU32(gd.getEndPos());
+    this->Stream.seekg(gd.getGridPos());
+  }
   readGridCompression(this->Stream);
   grid->readMeta(this->Stream);
   if ((*grid)[openvdb::GridBase::META_FILE_DELAYED_LOAD])
@@ -222,6 +277,7 @@ void OpenVDBCheckedArchive::ReadGridHeader(Entry& entry)
   if (this->fileVersion() >= openvdb::OPENVDB_FILE_VERSION_GRID_INSTANCING)
   {
     grid->readTransform(this->Stream);
+    entry.TreePosition = this->Position();
   }
   if (grid->getName().empty())
   {

@@ -14,6 +14,8 @@
 //   checked against the bytes that remain before OpenVDB allocates them;
 // - a grid read must end exactly where its descriptor says it ends (a corrupt leaf mask, node
 //   flag or chunk size desynchronises the stream and is caught here);
+// - the tree itself (topology and leaf buffers) is walked first, every count, flag and block
+//   size checked, before OpenVDB reads it (OpenVDBTreeCheck.h says what OpenVDB trusts);
 // - it never loads lazily: the trees are read in full from a plain stream.
 //
 // Every failure throws std::runtime_error with what is wrong; OpenVDB's own exceptions (zlib
@@ -43,6 +45,8 @@ public:
     /// The grid's metadata and transform (no tree, except in files without grid offsets,
     /// which are read in full when opened).
     openvdb::GridBase::Ptr Grid;
+    std::int64_t TreePosition = -1; ///< where the tree begins (after the transform)
+    std::uint32_t Compression = 0;  ///< the grid's compression flags
   };
 
   /// Opens `fileName` and checks its header and every grid descriptor; reads each grid's
@@ -79,7 +83,8 @@ private:
   /// returns to where it started.
   void ScanGridHeader(const openvdb::io::GridDescriptor& gd, std::int64_t end);
   void ReadGridHeader(Entry& entry);
-  void ReadTree(const openvdb::io::GridDescriptor& gd, openvdb::GridBase::Ptr grid);
+  /// Walks the entry's tree (OpenVDBTreeCheck) and reads it into `grid`.
+  void ReadTree(const Entry& entry, openvdb::GridBase::Ptr grid);
   [[noreturn]] void Fail(const std::string& what) const;
 
   std::string FileName;

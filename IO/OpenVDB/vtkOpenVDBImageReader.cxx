@@ -424,20 +424,30 @@ int vtkOpenVDBImageReader::RequestInformation(vtkInformation*,
     static_cast<std::int64_t>(L.Box.max().z()) - L.Box.min().z() + 1 };
   const double voxels = static_cast<double>(extent[0]) * extent[1] * extent[2];
   const double maximum = static_cast<double>(this->MaximumNumberOfVoxels);
+  // The output of factor f has ceil(extent / f) voxels per axis: their product (not the box's
+  // volume over f^3, which it exceeds at the edges; found by the VDB fuzzer) must fit.
   auto tooMany = [&](std::int64_t f)
-  { return voxels / std::pow(static_cast<double>(f), 3) > maximum; };
+  {
+    double n = 1.0;
+    for (const std::int64_t e : extent)
+    {
+      n *= static_cast<double>((e + f - 1) / f);
+    }
+    return n > maximum;
+  };
+  const std::int64_t largest = std::max(MaximumAutomaticDownsampling, this->DownsamplingFactor);
   std::int64_t factor = this->DownsamplingFactor;
   if (tooMany(factor))
   {
     factor = std::max<std::int64_t>(factor, static_cast<std::int64_t>(std::cbrt(voxels / maximum)));
-    while (tooMany(factor))
+    while (factor <= largest && tooMany(factor))
     {
       ++factor;
     }
   }
   // Averaging reads every voxel of the box: more than 16^3 voxels per output voxel is refused
   // unless DownsamplingFactor asks for it.
-  if (factor > std::max(MaximumAutomaticDownsampling, this->DownsamplingFactor))
+  if (factor > largest)
   {
     std::ostringstream os;
     os << "grid '" << chosen << "' spans " << extent[0] << " x " << extent[1] << " x " << extent[2]

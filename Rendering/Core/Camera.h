@@ -4,6 +4,8 @@
 
 #include "Vec3.h"
 
+#include <string>
+
 namespace avs
 {
 
@@ -25,6 +27,11 @@ struct Camera
   /// The ray through pixel (px, py) of a width x height image; (0, 0) is the lower left pixel
   /// (VTK's convention), (px + 0.5, py + 0.5) its centre when jitter is 0.5.
   Ray GenerateRay(double px, double py, int width, int height) const;
+
+  /// Empty when rays can be generated, else what is wrong: a non-finite value, the position on
+  /// the focal point (within double precision), a view-up along the view direction, a view
+  /// angle outside (0, 180) degrees or a parallel scale that is not positive.
+  std::string Validate() const;
 };
 
 } // namespace avs

@@ -2,6 +2,7 @@
 
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSShaders.h"
+#include "vtkAVSTextureMemory.h"
 
 #include "AmbientOcclusion.h"
 
@@ -138,6 +139,14 @@ void vtkAVSRayCaster::SetWindow(vtkOpenGLRenderWindow* window)
 
 void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
 {
+  // The deletes below go to the current context: make it the window's (a mapper destroyed or
+  // moved while another window's context is current deleted that context's objects of the
+  // same names; found by the soak), and restore the previous one after.
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (context)
+  {
+    context->PushContext();
+  }
   for (vtkTextureObject* t : { this->Scalars.Get(),
          this->Transfer.Get(),
          this->ScalarsAveraged.Get(),
@@ -182,14 +191,8 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
   this->Quad.reset();
   this->QuadMode = -1;
   this->QuadDefines.clear();
-  // The programs are names in `window`'s context, which need not be the current one (a mapper
-  // moving to another window releases the first one's resources). Without a window (it was
-  // deleted, and its context with it) the names are only forgotten.
-  auto* context = vtkOpenGLRenderWindow::SafeDownCast(window);
-  if (context)
-  {
-    context->PushContext();
-  }
+  // Without a window (it was deleted, and its context with it) the program names are only
+  // forgotten: they must not be used in the next context.
   for (unsigned int* program :
     { &this->ComputeProgram, &this->OcclusionProgram, &this->AverageProgram })
   {
@@ -199,15 +202,15 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
     }
     *program = 0;
   }
-  if (context)
-  {
-    context->PopContext();
-  }
   this->ComputeSupport = -1; // asked again in the next context
   this->SoftwareRenderer = -1;
   if (window == this->Window)
   {
     this->Window = nullptr;
+  }
+  if (context)
+  {
+    context->PopContext();
   }
 }
 
@@ -258,6 +261,24 @@ bool vtkAVSRayCaster::UploadScalarGrid(vtkSmartPointer<vtkTextureObject>& textur
     error = "the volume (" + std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " +
       std::to_string(d[2]) +
       ") is too large for the GPU (largest 3D texture: " + std::to_string(limit) + " per axis)";
+    return false;
+  }
+  // The budget of AVS_GPU_MEMORY_LIMIT_MB (vtkAVSTextureMemory.h), before anything is allocated.
+  if (!vtkAVSTextureMemory::Admit({ this->Scalars,
+                                    this->ScalarsAveraged,
+                                    this->AveragedExtinction,
+                                    this->Occlusion,
+                                    this->LightVolumes[0],
+                                    this->LightVolumes[1],
+                                    this->Scratch[0],
+                                    this->Scratch[1],
+                                    this->Scratch[2] },
+        texture,
+        d,
+        components,
+        internalFormat,
+        error))
+  {
     return false;
   }
   if (texture && !data && !internalFormat &&

@@ -409,3 +409,21 @@ TEST_F(OpenVDBReader, ErrorsGiveAnEmptyOutputAndAMessage)
   EXPECT_FALSE(vtkOpenVDBImageReader::CanReadFile(Path("random.vdb").c_str()));
   EXPECT_TRUE(vtkOpenVDBImageReader::CanReadFile(Path("good.vdb").c_str()));
 }
+
+// Found by the VDB fuzzer: the factor was chosen from the box's volume over f^3, but the output
+// has ceil(extent / f) voxels per axis, whose product exceeded MaximumNumberOfVoxels (4212 for
+// 4096 on a box of 128 x 128 x 768).
+TEST_F(OpenVDBReader, MemoryGuardCountsTheOutputVoxels)
+{
+  auto grid = openvdb::FloatGrid::create(0.0f);
+  grid->setName("density");
+  grid->tree().setValue(openvdb::Coord(0, 0, 0), 1.0f);
+  grid->tree().setValue(openvdb::Coord(127, 127, 767), 1.0f);
+  Write(Path("elongated.vdb"), { grid });
+  Reader r(Path("elongated.vdb"));
+  r.R->SetMaximumNumberOfVoxels(4096);
+  vtkImageData* out = r.Read();
+  EXPECT_EQ(r.Errors->Errors, 0);
+  EXPECT_GT(out->GetNumberOfPoints(), 0);
+  EXPECT_LE(out->GetNumberOfPoints(), 4096);
+}

@@ -178,6 +178,26 @@ int main(int, char*[])
     expectError(flat, "spacing");
     flat->SetSpacing(0.5, std::numeric_limits<double>::infinity(), 0.5);
     expectError(flat, "spacing");
+    // Found by the translator fuzzer: huge and subnormal spacings (an undefined step count,
+    // NaN pixels), and rays of more samples than any renderer takes.
+    flat->SetSpacing(6.9e174, 0.5, 1.8e-310);
+    expectError(flat, "outside [1e-30, 1e30]");
+    flat->SetSpacing(0.5, 0.5, 0.5);
+    flat->SetOrigin(0.0, 2e30, 0.0);
+    expectError(flat, "outside [1e-30, 1e30]");
+    flat->SetOrigin(0.0, 0.0, 0.0);
+    flat->SetSpacing(1e6, 1e-3, 1.0);
+    expectError(flat, "too many samples");
+  }
+  {
+    // Found by the translator fuzzer: a camera on its focal point (a volume far from the
+    // origin, where position and focal point round to the same number) gave NaN pixels.
+    vtkNew<vtkCamera> degenerate;
+    degenerate->SetFocalPoint(1e28, 1e28, 1e28);
+    degenerate->SetPosition(1e28 + 1.0, 1e28, 1e28);
+    filter->SetCamera(degenerate);
+    expectError(Ball(), "focal point");
+    filter->SetCamera(nullptr);
   }
   {
     vtkNew<vtkImageData> plane;

@@ -290,6 +290,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   renderer->SetNumberOfDirections(14);
   renderer->Update();
   vtkImageData* picture = renderer->GetOutput();
+  if (verbose)
+  {
+    const double* p = camera->GetPosition();
+    const double* f = camera->GetFocalPoint();
+    std::fprintf(stderr,
+      "camera %g %g %g -> %g %g %g; renderer: %d errors, %d pixels\n",
+      p[0],
+      p[1],
+      p[2],
+      f[0],
+      f[1],
+      f[2],
+      errors->Errors,
+      static_cast<int>(picture->GetNumberOfPoints()));
+  }
   if (errors->Errors > 0 || !gridOk)
   {
     FUZZ_CHECK(errors->Errors > 0 && picture->GetNumberOfPoints() == 0);

@@ -100,12 +100,18 @@ void VDBs(const fs::path& dir)
   using openvdb::io::COMPRESS_NONE;
   using openvdb::io::COMPRESS_ZIP;
   WriteVDB(dir / "fog_blosc.vdb", { Fog(1.0f, 3) }, COMPRESS_BLOSC | COMPRESS_ACTIVE_MASK);
-  WriteVDB(dir / "fog_zip.vdb", { Fog(0.5f, 3) }, COMPRESS_ZIP | COMPRESS_ACTIVE_MASK);
+  {
+    // OpenVDB writes fog volumes and level sets without zip: a grid of no class gets it.
+    auto zipped = Fog(0.5f, 3);
+    zipped->setGridClass(openvdb::GRID_UNKNOWN);
+    WriteVDB(dir / "fog_zip.vdb", { zipped }, COMPRESS_ZIP | COMPRESS_ACTIVE_MASK);
+  }
   WriteVDB(dir / "fog_none.vdb", { Fog(2.0f, 2) }, COMPRESS_NONE);
   WriteVDB(dir / "fog_mask.vdb", { Fog(2.0f, 2) }, COMPRESS_ACTIVE_MASK);
   {
     auto half = Fog(1.5f, 3);
     half->setSaveFloatAsHalf(true);
+    half->setGridClass(openvdb::GRID_UNKNOWN);
     WriteVDB(dir / "fog_half.vdb", { half }, COMPRESS_ZIP | COMPRESS_ACTIVE_MASK);
   }
   {

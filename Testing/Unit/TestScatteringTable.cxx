@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 
 using namespace avs;
 
@@ -148,6 +149,21 @@ TEST(ScatteringTable, InScatteringIsNonNegativeAndFinite)
     ASSERT_GE(t.AError[i], 0.0f);
   }
   EXPECT_GT(t.InScattering(0.2, 1.0, 0.5, 0.9), 0.0);
+}
+
+// Found by the table fuzzer: std::clamp passes NaN on, and the int cast of the node index then
+// read outside the table. A NaN coordinate now takes the first node.
+TEST(ScatteringTable, NaNArgumentsTakeTheFirstNode)
+{
+  const auto& t = Shipped();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(t.InScattering(nan, 1.0, 0.5, 0.9), t.InScattering(0.0, 1.0, 0.5, 0.9));
+  EXPECT_EQ(t.InScattering(0.2, nan, 0.5, 0.9), t.InScattering(0.2, 0.0, 0.5, 0.9));
+  EXPECT_EQ(t.ForwardTransport(1.0, nan, 0.9), t.ForwardTransport(1.0, -0.95, 0.9));
+  EXPECT_EQ(t.ForwardTransport(1.0, 0.5, nan), t.ForwardTransport(1.0, 0.5, 0.0));
+  const ScatteringSlice slice = t.Slice(nan, nan);
+  EXPECT_TRUE(std::isfinite(slice.InScattering(nan, nan)));
+  EXPECT_TRUE(std::isfinite(slice.ForwardTransport(nan)));
 }
 
 TEST(ScatteringTable, SliceMatchesTheFullInterpolation)

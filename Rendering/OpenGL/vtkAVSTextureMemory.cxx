@@ -1,0 +1,87 @@
+#include "vtkAVSTextureMemory.h"
+
+#include "vtkTextureObject.h"
+#include "vtkType.h"
+#include "vtk_glew.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace
+{
+double BytesPerComponent(unsigned int internalFormat)
+{
+  switch (internalFormat)
+  {
+    case GL_R16F:
+    case GL_RG16F:
+    case GL_RGB16F:
+    case GL_RGBA16F:
+      return 2.0;
+    default:
+      return 4.0; // the ray caster's volume textures are 32-bit floats otherwise
+  }
+}
+
+std::string Mebibytes(double bytes)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.1f MiB", bytes / (1024.0 * 1024.0));
+  return text;
+}
+} // namespace
+
+double vtkAVSTextureMemory::LimitBytes()
+{
+  const char* text = std::getenv("AVS_GPU_MEMORY_LIMIT_MB");
+  const double mebibytes = text ? std::atof(text) : 0.0;
+  return mebibytes > 0.0 ? mebibytes * 1024.0 * 1024.0 : 0.0;
+}
+
+double vtkAVSTextureMemory::Bytes(const std::array<int, 3>& d,
+  int components,
+  unsigned int internalFormat)
+{
+  return static_cast<double>(d[0]) * d[1] * d[2] * components * BytesPerComponent(internalFormat);
+}
+
+double vtkAVSTextureMemory::Bytes(vtkTextureObject* t)
+{
+  if (!t || !t->GetHandle())
+  {
+    return 0.0;
+  }
+  const std::array<int, 3> d = { static_cast<int>(t->GetWidth()),
+    static_cast<int>(t->GetHeight()),
+    static_cast<int>(t->GetDepth()) };
+  return Bytes(d, t->GetComponents(), t->GetInternalFormat(VTK_FLOAT, t->GetComponents(), false));
+}
+
+bool vtkAVSTextureMemory::Admit(const std::vector<vtkTextureObject*>& held,
+  const vtkTextureObject* replaced,
+  const std::array<int, 3>& d,
+  int components,
+  unsigned int internalFormat,
+  std::string& error)
+{
+  const double limit = LimitBytes();
+  if (limit <= 0.0)
+  {
+    return true;
+  }
+  double kept = 0.0;
+  for (vtkTextureObject* t : held)
+  {
+    kept += t == replaced ? 0.0 : Bytes(t);
+  }
+  const double needed = Bytes(d, components, internalFormat);
+  if (kept + needed <= limit)
+  {
+    return true;
+  }
+  error = "out of GPU memory: a " + std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " +
+    std::to_string(d[2]) + " texture of " + std::to_string(components) + " channel" +
+    (components > 1 ? "s" : "") + " needs " + Mebibytes(needed) + " beside the " + Mebibytes(kept) +
+    " this volume holds, more than the " + Mebibytes(limit) + " allowed (AVS_GPU_MEMORY_LIMIT_MB)";
+  return false;
+}

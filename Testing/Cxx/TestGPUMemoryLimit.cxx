@@ -1,0 +1,141 @@
+// A volume the GPU cannot hold: one clear error, nothing of it left on the GPU, and the next,
+// smaller volume renders. On a software rasterizer the GPU memory is the process's, so the
+// limit is set through AVS_GPU_MEMORY_LIMIT_MB (vtkAVSTextureMemory), which the mappers obey
+// as they obey a GPU that reports GL_OUT_OF_MEMORY.
+//
+// For each mapper, with a limit of 6 MiB: a 128^3 volume (8 MiB of scalars: refused at the
+// first texture), a 100^3 volume (4 MiB of scalars fit, its second texture does not, for the
+// ambient-occlusion and ambient-scattering mappers; emission-absorption fits it), then a 32^3
+// volume, which must render. The window's GL objects are counted by name after each frame.
+#include "MapperTestScene.h"
+#include "SoakCensus.h"
+#include "TestErrorObserver.h"
+#include "vtkAmbientOcclusionVolumeMapper.h"
+#include "vtkAmbientScatteringVolumeMapper.h"
+#include "vtkEmissionAbsorptionVolumeMapper.h"
+
+#include "vtkFloatArray.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace
+{
+vtkSmartPointer<vtkImageData> Cube(int n)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(n, n, n);
+  image->SetSpacing(2.0 / (n - 1), 2.0 / (n - 1), 2.0 / (n - 1));
+  image->SetOrigin(-1, -1, -1);
+  vtkNew<vtkFloatArray> v;
+  v->SetNumberOfTuples(static_cast<vtkIdType>(n) * n * n);
+  vtkIdType id = 0;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+      {
+        const double x = 2.0 * i / (n - 1) - 1, y = 2.0 * j / (n - 1) - 1,
+                     z = 2.0 * k / (n - 1) - 1;
+        v->SetValue(
+          id++, static_cast<float>(std::max(0.0, 1.0 - std::sqrt(x * x + y * y + z * z))));
+      }
+  image->GetPointData()->SetScalars(v);
+  return image;
+}
+
+vtkSmartPointer<vtkVolumeProperty> Property()
+{
+  auto p = vtkSmartPointer<vtkVolumeProperty>::New();
+  vtkNew<vtkColorTransferFunction> c;
+  c->AddRGBPoint(0, 1, 0.8, 0.6);
+  c->AddRGBPoint(1, 1, 1, 1);
+  vtkNew<vtkPiecewiseFunction> o;
+  o->AddPoint(0, 0);
+  o->AddPoint(1, 0.5);
+  p->SetColor(c);
+  p->SetScalarOpacity(o);
+  p->SetScalarOpacityUnitDistance(0.1);
+  p->SetInterpolationTypeToLinear();
+  return p;
+}
+
+int failures = 0;
+void Check(bool ok, const std::string& what)
+{
+  if (!ok)
+  {
+    std::printf("FAIL: %s\n", what.c_str());
+    ++failures;
+  }
+}
+} // namespace
+
+int main(int, char*[])
+{
+  setenv("AVS_GPU_MEMORY_LIMIT_MB", "6", 1);
+  const auto big = Cube(128), middle = Cube(100), small = Cube(32);
+  for (int kind = 0; kind < 3; ++kind)
+  {
+    vtkSmartPointer<vtkAVSVolumeMapper> mapper;
+    const char* name = kind == 0 ? "EA" : (kind == 1 ? "AO" : "AS");
+    if (kind == 0)
+      mapper = vtkSmartPointer<vtkEmissionAbsorptionVolumeMapper>::New();
+    else if (kind == 1)
+      mapper = vtkSmartPointer<vtkAmbientOcclusionVolumeMapper>::New();
+    else
+      mapper = vtkSmartPointer<vtkAmbientScatteringVolumeMapper>::New();
+    vtkNew<TestErrorObserver> errors;
+    mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+    vtkNew<vtkRenderWindow> window;
+    PrepareTestWindow(window, 96, 96);
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    renderer->GetActiveCamera()->SetPosition(0, 0, 6);
+    window->Render(); // the window's own objects exist before the volume comes
+    const GLCensus empty = CountGLObjects(window);
+
+    vtkNew<vtkVolume> volume;
+    volume->SetMapper(mapper);
+    volume->SetProperty(Property());
+    renderer->AddVolume(volume);
+    for (vtkImageData* image : { big.Get(), middle.Get() })
+    {
+      const int before = errors->Errors;
+      mapper->SetInputData(image);
+      window->Render();
+      const GLCensus after = CountGLObjects(window);
+      const std::string what =
+        std::string(name) + ", " + std::to_string(image->GetDimensions()[0]) + "^3";
+      if (image == big.Get() || kind != 0)
+      {
+        Check(errors->Errors == before + 1,
+          what + ": one error, got " + std::to_string(errors->Errors - before));
+        Check(errors->LastError.find("out of GPU memory") != std::string::npos &&
+            errors->LastError.find("AVS_GPU_MEMORY_LIMIT_MB") != std::string::npos,
+          what + ": the error says what is wrong: " + errors->LastError);
+        Check(mapper->GetNumberOfRenderedFrames() == 0, what + ": nothing drawn");
+        Check(after.Textures <= empty.Textures,
+          what + ": its textures released (" + std::to_string(after.Textures) + " textures, " +
+            std::to_string(empty.Textures) + " before the volume)");
+      }
+      std::printf("%s %d^3: %d errors, %d frames, %s\n",
+        name,
+        image->GetDimensions()[0],
+        errors->Errors - before,
+        mapper->GetNumberOfRenderedFrames(),
+        after.ToString().c_str());
+    }
+    const int before = errors->Errors, frames = mapper->GetNumberOfRenderedFrames();
+    mapper->SetInputData(small);
+    window->Render();
+    Check(
+      errors->Errors == before, std::string(name) + ", 32^3: no error (" + errors->LastError + ")");
+    Check(
+      mapper->GetNumberOfRenderedFrames() == frames + 1, std::string(name) + ", 32^3: rendered");
+    Check(Brightness(Grab(window)) > 0.0, std::string(name) + ", 32^3: a picture");
+  }
+  unsetenv("AVS_GPU_MEMORY_LIMIT_MB");
+  std::printf("%s\n", failures ? "FAILED" : "PASSED");
+  return failures ? 1 : 0;
+}
