@@ -2,15 +2,11 @@
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
-#include "vtkDataArray.h"
-#include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
-#include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkPointData.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkVolumeProperty.h"
@@ -22,144 +18,7 @@
 namespace
 {
 constexpr int TableSize = 1024;
-
-template<typename T>
-void CopyValues(const T* in, vtkIdType n, int components, float* out)
-{
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    out[i] = static_cast<float>(in[i * components]);
-  }
-}
 } // namespace
-
-bool vtkAVSSceneTranslator::ToGrid(vtkImageData* image, avs::Grid& grid, std::string& error)
-{
-  if (!image)
-  {
-    error = "no input image data";
-    return false;
-  }
-  int dims[3];
-  image->GetDimensions(dims);
-  if (dims[0] < 1 || dims[1] < 1 || dims[2] < 1 || image->GetNumberOfPoints() < 1)
-  {
-    error = "the input image is empty";
-    return false;
-  }
-  if (dims[0] < 2 || dims[1] < 2 || dims[2] < 2)
-  {
-    std::ostringstream os;
-    os << "the input image is not a volume (dimensions " << dims[0] << " x " << dims[1] << " x "
-       << dims[2] << "; at least 2 points per axis are needed)";
-    error = os.str();
-    return false;
-  }
-  if (static_cast<double>(dims[0]) * dims[1] * dims[2] > MaximumVoxels)
-  {
-    error = "the input image is too large (more than 2^30 voxels)";
-    return false;
-  }
-  vtkDataArray* scalars = image->GetPointData()->GetScalars();
-  if (!scalars)
-  {
-    error = "the input image has no point scalars";
-    return false;
-  }
-  if (scalars->GetNumberOfComponents() != 1)
-  {
-    std::ostringstream os;
-    os << "unsupported number of scalar components: " << scalars->GetNumberOfComponents()
-       << " (only single-component scalars are supported)";
-    error = os.str();
-    return false;
-  }
-  if (scalars->GetNumberOfTuples() != image->GetNumberOfPoints())
-  {
-    error = "the point scalars do not match the image's number of points";
-    return false;
-  }
-  double spacing[3], origin[3];
-  image->GetSpacing(spacing);
-  image->GetOrigin(origin);
-  for (int a = 0; a < 3; ++a)
-  {
-    if (!std::isfinite(spacing[a]) || !(spacing[a] > 0.0))
-    {
-      std::ostringstream os;
-      os << "invalid spacing (" << spacing[0] << ", " << spacing[1] << ", " << spacing[2]
-         << "): it must be finite and positive";
-      error = os.str();
-      return false;
-    }
-    if (!std::isfinite(origin[a]))
-    {
-      error = "the image origin is not finite";
-      return false;
-    }
-  }
-  avs::GridGeometry g;
-  g.Dimensions = { dims[0], dims[1], dims[2] };
-  g.Spacing = { spacing[0], spacing[1], spacing[2] };
-  // VTK 9.1 image data has a direction matrix: world = origin + D (ijk * spacing), where ijk
-  // runs over the extent. The core's grid starts at index 0, so its origin is the world
-  // position of the extent's first point.
-  const double* d = image->GetDirectionMatrix()->GetData();
-  int extent[6];
-  image->GetExtent(extent);
-  const double first[3] = {
-    extent[0] * spacing[0], extent[2] * spacing[1], extent[4] * spacing[2]
-  };
-  g.Origin = { origin[0] + d[0] * first[0] + d[1] * first[1] + d[2] * first[2],
-    origin[1] + d[3] * first[0] + d[4] * first[1] + d[5] * first[2],
-    origin[2] + d[6] * first[0] + d[7] * first[1] + d[8] * first[2] };
-  for (int i = 0; i < 9; ++i)
-  {
-    g.Direction[i] = d[i];
-  }
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      double dot = 0.0;
-      for (int k = 0; k < 3; ++k)
-      {
-        dot += d[3 * k + r] * d[3 * k + c];
-      }
-      if (!std::isfinite(dot) || std::abs(dot - (r == c ? 1.0 : 0.0)) > 1e-6)
-      {
-        error = "the image's direction matrix is not orthonormal";
-        return false;
-      }
-    }
-  }
-  grid = avs::Grid(g);
-  const vtkIdType n = image->GetNumberOfPoints();
-  switch (scalars->GetDataType())
-  {
-    vtkTemplateMacro(CopyValues(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)),
-      n,
-      scalars->GetNumberOfComponents(),
-      grid.Values.data()));
-    default:
-      for (vtkIdType i = 0; i < n; ++i)
-      {
-        grid.Values[i] = static_cast<float>(scalars->GetComponent(i, 0));
-      }
-  }
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    if (!std::isfinite(grid.Values[i]))
-    {
-      std::ostringstream os;
-      os << "the scalars contain NaN or infinite values (first at point " << i << ")";
-      error = os.str();
-      grid = avs::Grid();
-      return false;
-    }
-  }
-  return true;
-}
 
 bool vtkAVSSceneTranslator::ToTransferFunction(vtkVolumeProperty* property,
   double lo,

@@ -2,16 +2,14 @@
  * @class   vtkAVSSceneTranslator
  * @brief   translates VTK state into the VTK-free core's types (private to the module)
  *
- * Image data to a float grid (any scalar type, point scalars, origin, spacing, direction
- * matrix), a vtkVolumeProperty to sampled transfer functions, a renderer's lights and a camera
- * to core lights and camera. Every check of the input lives here, so all the module's classes
- * reject the same bad input with the same messages.
+ * A vtkVolumeProperty to sampled transfer functions, a renderer's lights and a camera to core
+ * lights and camera (the image's arrays: vtkAVSDataTranslator). Every check of the input lives
+ * here, so all the module's classes reject the same bad input with the same messages.
  */
 #ifndef vtkAVSSceneTranslator_h
 #define vtkAVSSceneTranslator_h
 
 #include "Camera.h"
-#include "Grid.h"
 #include "Lights.h"
 #include "TransferFunction.h"
 
@@ -19,22 +17,12 @@
 #include <vector>
 
 class vtkCamera;
-class vtkImageData;
 class vtkRenderer;
 class vtkVolumeProperty;
 
 class vtkAVSSceneTranslator
 {
 public:
-  /// Largest number of voxels the CPU code accepts (2^30).
-  static constexpr double MaximumVoxels = 1073741824.0;
-
-  /// Checks image data and copies its active point scalars (one component) into `grid`.
-  /// Returns false with a message in `error` for: no image, an empty image, no point scalars,
-  /// a component count other than 1, NaN or infinite values, non-finite or non-positive
-  /// spacing, a non-finite origin, a direction matrix that is not orthonormal, too many voxels.
-  static bool ToGrid(vtkImageData* image, avs::Grid& grid, std::string& error);
-
   /// Samples the colour and scalar-opacity functions of component 0 over [lo, hi].
   static bool ToTransferFunction(vtkVolumeProperty* property,
     double lo,

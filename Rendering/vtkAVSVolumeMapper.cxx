@@ -6,6 +6,7 @@
 #include "ReferenceRenderer.h"
 #include "ScatteringParameters.h"
 #include "ScatteringTable.h"
+#include "vtkAVSDataTranslator.h"
 #include "vtkAVSRayCaster.h"
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSSceneTranslator.h"
@@ -30,10 +31,14 @@ struct vtkAVSVolumeMapper::Internals
 {
   vtkAVSRayCaster RayCaster;
 
-  // What the uploaded data came from.
+  // What the uploaded data came from: the image, the selected array and the selection.
   vtkImageData* DataObject = nullptr;
   vtkMTimeType DataTime = 0;
+  vtkDataArray* ArrayObject = nullptr;
+  vtkMTimeType ArrayTime = 0;
+  vtkAVSDataTranslator::Selection Selection;
   avs::Grid Scalars;
+  double ScalarRange[2] = { 0.0, 1.0 };
   bool ScalarsUploaded = false;
 
   vtkVolumeProperty* PropertyObject = nullptr;
@@ -163,19 +168,59 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     vtkErrorMacro("Cannot render: no input image data.");
     return false;
   }
-  if (input != in.DataObject || input->GetMTime() != in.DataTime || in.Scalars.Values.empty())
+  // The array to draw, as vtkGPUVolumeRayCastMapper selects it.
+  vtkAVSDataTranslator::Selection selection;
+  selection.ScalarMode = this->ScalarMode;
+  selection.ArrayAccessMode = this->ArrayAccessMode;
+  selection.ArrayId = this->ArrayId;
+  selection.ArrayName = this->ArrayName ? this->ArrayName : "";
+  bool cellData = false;
+  vtkDataArray* array = vtkAVSDataTranslator::Select(input, selection, cellData, error);
+  if (!array)
   {
-    avs::Grid grid;
-    if (!vtkAVSSceneTranslator::ToGrid(input, grid, error))
+    in.DataObject = nullptr;
+    in.Scalars = avs::Grid();
+    vtkErrorMacro("Cannot render: " << error);
+    return false;
+  }
+  const bool sameSelection = selection.ScalarMode == in.Selection.ScalarMode &&
+    selection.ArrayAccessMode == in.Selection.ArrayAccessMode &&
+    selection.ArrayId == in.Selection.ArrayId && selection.ArrayName == in.Selection.ArrayName;
+  if (input != in.DataObject || input->GetMTime() != in.DataTime || array != in.ArrayObject ||
+    array->GetMTime() != in.ArrayTime || !sameSelection || in.Scalars.Values.empty())
+  {
+    vtkAVSDataTranslator::Volume data;
+    std::string warning;
+    if (!vtkAVSDataTranslator::ToVolume(input, selection, data, error, warning))
     {
       in.DataObject = nullptr;
       in.Scalars = avs::Grid();
       vtkErrorMacro("Cannot render: " << error);
       return false;
     }
-    in.Scalars = std::move(grid);
+    if (data.Components.size() != 1)
+    {
+      in.DataObject = nullptr;
+      in.Scalars = avs::Grid();
+      vtkErrorMacro("Cannot render: unsupported number of scalar components: "
+        << data.Components.size() << " (only single-component scalars are supported)");
+      return false;
+    }
+    if (data.NaNVoxels || data.Infinities)
+    {
+      in.DataObject = nullptr;
+      in.Scalars = avs::Grid();
+      vtkErrorMacro("Cannot render: the scalars contain NaN or infinite values");
+      return false;
+    }
+    in.Scalars = std::move(data.Components[0]);
+    in.ScalarRange[0] = data.Ranges[0][0];
+    in.ScalarRange[1] = data.Ranges[0][1];
     in.DataObject = input;
     in.DataTime = input->GetMTime();
+    in.ArrayObject = array;
+    in.ArrayTime = array->GetMTime();
+    in.Selection = selection;
     in.ScalarsUploaded = false;
     ++in.DataVersion;
     in.PropertyObject = nullptr; // the scalar range may have changed
@@ -188,10 +233,8 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   }
   if (property != in.PropertyObject || property->GetMTime() != in.PropertyTime)
   {
-    double range[2];
-    input->GetPointData()->GetScalars()->GetRange(range, 0);
     if (!vtkAVSSceneTranslator::ToTransferFunction(
-          property, range[0], range[1], in.Transfer, in.UnitDistance, error))
+          property, in.ScalarRange[0], in.ScalarRange[1], in.Transfer, in.UnitDistance, error))
     {
       vtkErrorMacro("Cannot render: " << error);
       return false;
@@ -508,6 +551,7 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.Parameters = in.Parameters;
   frame.WorldToIndex = in.WorldToIndex;
   frame.Dimensions = in.Scalars.Geometry.Dimensions;
+  frame.Border = in.Scalars.Geometry.Border;
   frame.LightVolumeDimensions = in.LightGridDimensions;
   frame.OcclusionDimensions = in.OcclusionDimensions;
   frame.UnitDistance = in.UnitDistance;

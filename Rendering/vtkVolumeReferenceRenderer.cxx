@@ -2,6 +2,7 @@
 
 #include "PathTracer.h"
 #include "ReferenceRenderer.h"
+#include "vtkAVSDataTranslator.h"
 #include "vtkAVSSceneTranslator.h"
 #include "vtkAmbientScatteringTable.h"
 
@@ -42,6 +43,28 @@ vtkVolumeReferenceRenderer::~vtkVolumeReferenceRenderer()
   this->SetRenderer(nullptr);
   this->SetCamera(nullptr);
   this->SetScatteringTable(nullptr);
+}
+
+void vtkVolumeReferenceRenderer::SelectScalarArray(int arrayNum)
+{
+  if (this->ArrayId == arrayNum && this->ArrayAccessMode == 0)
+  {
+    return;
+  }
+  this->ArrayId = arrayNum;
+  this->ArrayAccessMode = 0; // VTK_GET_ARRAY_BY_ID
+  this->Modified();
+}
+
+void vtkVolumeReferenceRenderer::SelectScalarArray(const char* arrayName)
+{
+  if (!arrayName || (this->ArrayName == arrayName && this->ArrayAccessMode == 1))
+  {
+    return;
+  }
+  this->ArrayName = arrayName;
+  this->ArrayAccessMode = 1; // VTK_GET_ARRAY_BY_NAME
+  this->Modified();
 }
 
 const char* vtkVolumeReferenceRenderer::GetRenderModeAsString()
@@ -138,21 +161,41 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
   output->Initialize();
 
   avs::VolumeScene scene;
-  std::string error;
-  if (!vtkAVSSceneTranslator::ToGrid(input, scene.Scalars, error))
+  std::string error, warning;
+  vtkAVSDataTranslator::Selection selection;
+  selection.ScalarMode = this->ScalarMode;
+  selection.ArrayAccessMode = this->ArrayAccessMode;
+  selection.ArrayId = this->ArrayId;
+  selection.ArrayName = this->ArrayName;
+  vtkAVSDataTranslator::Volume data;
+  if (!vtkAVSDataTranslator::ToVolume(input, selection, data, error, warning))
   {
     vtkErrorMacro("Cannot render: " << error);
     return 1;
   }
+  if (data.Components.size() != 1)
+  {
+    vtkErrorMacro("Cannot render: unsupported number of scalar components: "
+      << data.Components.size() << " (only single-component scalars are supported)");
+    return 1;
+  }
+  if (data.NaNVoxels || data.Infinities)
+  {
+    vtkErrorMacro("Cannot render: the scalars contain NaN or infinite values");
+    return 1;
+  }
+  scene.Scalars = std::move(data.Components[0]);
   if (!this->VolumeProperty)
   {
     vtkErrorMacro("Cannot render: no volume property set.");
     return 1;
   }
-  double range[2];
-  input->GetPointData()->GetScalars()->GetRange(range, 0);
-  if (!vtkAVSSceneTranslator::ToTransferFunction(
-        this->VolumeProperty, range[0], range[1], scene.Transfer, scene.UnitDistance, error))
+  if (!vtkAVSSceneTranslator::ToTransferFunction(this->VolumeProperty,
+        data.Ranges[0][0],
+        data.Ranges[0][1],
+        scene.Transfer,
+        scene.UnitDistance,
+        error))
   {
     vtkErrorMacro("Cannot render: " << error);
     return 1;
@@ -292,6 +335,10 @@ void vtkVolumeReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RenderMode: " << this->GetRenderModeAsString() << "\n";
+  os << indent << "ScalarMode: " << this->ScalarMode << "\n";
+  os << indent << "ArrayAccessMode: " << (this->ArrayAccessMode ? "ByName" : "ById") << "\n";
+  os << indent << "ArrayId: " << this->ArrayId << "\n";
+  os << indent << "ArrayName: " << this->ArrayName << "\n";
   os << indent << "VolumeProperty: " << this->VolumeProperty << "\n";
   os << indent << "Renderer: " << this->Renderer << "\n";
   os << indent << "Camera: " << this->Camera << "\n";

@@ -50,7 +50,7 @@ void VolumeTracker::Walk(const Vec3& origin,
   const Vec3 o = g.WorldToLocal(origin);
   const Vec3 d = g.WorldToLocalDirection(direction);
   double t0, t1;
-  if (!IntersectBox(g.LocalExtent(), o, d, t0, t1))
+  if (!IntersectVolumeBox(g, o, d, t0, t1))
   {
     return;
   }
@@ -75,13 +75,19 @@ void VolumeTracker::Walk(const Vec3& origin,
     {
       const double p = io[a] + (t + 1e-9 * (1.0 + t)) * id[a];
       c[a] = std::clamp(static_cast<int>(std::floor(p / B)), 0, cells[a] - 1);
+      // The first and last cells reach to the box's faces (cell data's border beyond the
+      // lattice takes the values at its faces, which those cells bound).
+      const double lower = c[a] == 0 ? -g.Border : c[a] * B;
+      const double upper = c[a] == cells[a] - 1
+        ? std::max((c[a] + 1.0) * B, g.Dimensions[a] - 1 + g.Border)
+        : (c[a] + 1.0) * B;
       if (id[a] > 0.0)
       {
-        exit = std::min(exit, ((c[a] + 1) * B - io[a]) / id[a]);
+        exit = std::min(exit, (upper - io[a]) / id[a]);
       }
       else if (id[a] < 0.0)
       {
-        exit = std::min(exit, (c[a] * B - io[a]) / id[a]);
+        exit = std::min(exit, (lower - io[a]) / id[a]);
       }
     }
     exit = std::max(exit, t + 1e-12);

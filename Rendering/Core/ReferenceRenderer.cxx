@@ -40,6 +40,15 @@ inline double SampleLocal(const Grid& g, const Vec3& local, double outside)
   const Vec3& s = g.Geometry.Spacing;
   return g.SampleIndex({ local.x / s.x, local.y / s.y, local.z / s.z }, outside);
 }
+
+// A grid over the data's lattice (light volumes, averaged extinction, occlusion) at a local point
+// of the volume, clamped into its lattice as the GPU's textures clamp to the edge: cell data's
+// border reaches half a cell beyond the lattice.
+inline double SampleLocalClamped(const Grid& g, const Vec3& local)
+{
+  const Vec3& s = g.Geometry.Spacing;
+  return g.SampleClamped({ local.x / s.x, local.y / s.y, local.z / s.z });
+}
 } // namespace
 
 bool Precompute(const VolumeScene& scene,
@@ -128,7 +137,7 @@ void CastRay(const VolumeScene& scene,
   const Vec3 o = geometry.WorldToLocal(ray.Origin);
   const Vec3 d = geometry.WorldToLocalDirection(ray.Direction);
   double t0, t1;
-  if (!IntersectBox(geometry.LocalExtent(), o, d, t0, t1) || t1 <= 0.0)
+  if (!IntersectVolumeBox(geometry, o, d, t0, t1) || t1 <= 0.0)
   {
     return;
   }
@@ -164,14 +173,14 @@ void CastRay(const VolumeScene& scene,
     {
       return Vec3{ 0, 0, 0 };
     }
-    const double tau = p.AmbientRadius * SampleLocal(v.AveragedAtVoxels, x, 0.0);
+    const double tau = p.AmbientRadius * SampleLocalClamped(v.AveragedAtVoxels, x);
     const Vec3 world = geometry.LocalToWorld(x);
     Vec3 inscatter{ 0, 0, 0 };
     for (std::size_t j = 0; j < scene.Lights.size(); ++j)
     {
       const Light& light = scene.Lights[j];
       const double cosTheta = Dot(light.PropagationDirection(world), -ray.Direction);
-      const double transmittance = SampleLocal(v.LightVolumes[j], x, 1.0);
+      const double transmittance = SampleLocalClamped(v.LightVolumes[j], x);
       inscatter = inscatter +
         light.FreeIrradiance(world) * (transmittance * v.Slice.InScatteringCos(cosTheta, tau));
     }
@@ -202,7 +211,7 @@ void CastRay(const VolumeScene& scene,
     }
     else if (mode == RenderMode::AmbientOcclusion)
     {
-      double weight = p.AmbientWeight * SampleLocal(v.Occlusion, x, 1.0) + p.EmissionWeight;
+      double weight = p.AmbientWeight * SampleLocalClamped(v.Occlusion, x) + p.EmissionWeight;
       if (p.DirectLightWeight > 0.0 && sigmaT > 0.0)
       {
         const Vec3 world = geometry.LocalToWorld(x);

@@ -723,6 +723,7 @@ bool vtkAVSRayCaster::ComputeOcclusion(const avs::Grid& extinction,
   const auto& d = g.Dimensions;
   glUniform3i(location("u_dimensions"), d[0], d[1], d[2]);
   glUniform3i(location("u_targetDimensions"), dimensions[0], dimensions[1], dimensions[2]);
+  glUniform1f(location("u_border"), static_cast<float>(g.Border));
   glUniform1i(location("u_directions"), directions);
   glUniform1i(location("u_steps"), n);
   glUniform1f(location("u_step"), static_cast<float>(h));
@@ -955,6 +956,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     static_cast<float>(frame.Dimensions[1]),
     static_cast<float>(frame.Dimensions[2]) };
   program->SetUniform3f("u_dimensions", dims);
+  program->SetUniformf("u_border", static_cast<float>(frame.Border));
   program->SetUniformi("u_depth", this->Depth->GetTextureUnit());
   this->Scalars->Activate();
   program->SetUniformi("u_scalars", this->Scalars->GetTextureUnit());

@@ -113,6 +113,7 @@ public:
     avs::ScatteringParameters Parameters; ///< resolved
     vtkMatrix4x4* WorldToIndex = nullptr; ///< row-major, VTK convention
     std::array<int, 3> Dimensions{ 1, 1, 1 };
+    double Border = 0.0; ///< the box beyond the samples, in voxels (cell data: 0.5)
     std::array<int, 3> LightVolumeDimensions{ 1, 1, 1 };
     std::array<int, 3> OcclusionDimensions{ 1, 1, 1 };
     double UnitDistance = 1.0;

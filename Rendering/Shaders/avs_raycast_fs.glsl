@@ -17,6 +17,7 @@ uniform mat4 u_worldToIndex; // world -> continuous voxel index of the data
 uniform sampler2D u_depth;   // depth of what the renderer drew before
 uniform sampler3D u_scalars; // point scalars, component 0
 uniform vec3 u_dimensions;   // voxels per axis
+uniform float u_border;      // the box reaches this many voxels beyond them (cell data: 0.5)
 uniform float u_sampleDistance; // world units
 uniform float u_termination;    // stop when T falls below
 uniform int u_jitter;           // 1: jitter the first sample per pixel
@@ -54,8 +55,8 @@ void main()
   // The ray in index space: index(t) = io + t * id for world distance t.
   vec3 io = (u_worldToIndex * vec4(origin, 1.0)).xyz;
   vec3 id = (u_worldToIndex * vec4(direction, 0.0)).xyz;
-  vec3 lo = -io / id;
-  vec3 hi = (u_dimensions - 1.0 - io) / id;
+  vec3 lo = (-u_border - io) / id;
+  vec3 hi = (u_dimensions - 1.0 + u_border - io) / id;
   vec3 tmin = min(lo, hi);
   vec3 tmax = max(lo, hi);
   float t0 = max(max(max(tmin.x, tmin.y), tmin.z), 0.0);
