@@ -1,79 +1,15 @@
 #include "vtkAVSSceneTranslator.h"
 
 #include "vtkCamera.h"
-#include "vtkColorTransferFunction.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
-#include "vtkPiecewiseFunction.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
-#include "vtkVolumeProperty.h"
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
-
-namespace
-{
-constexpr int TableSize = 1024;
-} // namespace
-
-bool vtkAVSSceneTranslator::ToTransferFunction(vtkVolumeProperty* property,
-  double lo,
-  double hi,
-  avs::TransferFunction& tf,
-  double& unitDistance,
-  std::string& error)
-{
-  if (!property)
-  {
-    error = "no volume property";
-    return false;
-  }
-  if (!std::isfinite(lo) || !std::isfinite(hi))
-  {
-    error = "the scalar range is not finite";
-    return false;
-  }
-  if (hi <= lo)
-  {
-    hi = lo + 1.0;
-  }
-  tf = avs::TransferFunction();
-  tf.Minimum = lo;
-  tf.Maximum = hi;
-  std::vector<float> color(3 * TableSize), opacity(TableSize);
-  if (property->GetColorChannels(0) == 1)
-  {
-    vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(0);
-    gray->GetTable(lo, hi, TableSize, opacity.data());
-    for (int i = 0; i < TableSize; ++i)
-    {
-      color[3 * i] = color[3 * i + 1] = color[3 * i + 2] = opacity[i];
-    }
-  }
-  else
-  {
-    property->GetRGBTransferFunction(0)->GetTable(lo, hi, TableSize, color.data());
-  }
-  property->GetScalarOpacity(0)->GetTable(lo, hi, TableSize, opacity.data());
-  for (int i = 0; i < TableSize; ++i)
-  {
-    tf.Color.push_back({ std::min(1.0f, std::max(0.0f, color[3 * i])),
-      std::min(1.0f, std::max(0.0f, color[3 * i + 1])),
-      std::min(1.0f, std::max(0.0f, color[3 * i + 2])) });
-    tf.Opacity.push_back(std::min(1.0f, std::max(0.0f, opacity[i])));
-  }
-  unitDistance = property->GetScalarOpacityUnitDistance(0);
-  if (!std::isfinite(unitDistance) || !(unitDistance > 0.0))
-  {
-    error = "the scalar opacity unit distance must be finite and positive";
-    return false;
-  }
-  return true;
-}
 
 std::vector<avs::Light> vtkAVSSceneTranslator::ToLights(vtkRenderer* renderer,
   vtkCamera* camera,

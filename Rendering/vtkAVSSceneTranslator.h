@@ -2,35 +2,24 @@
  * @class   vtkAVSSceneTranslator
  * @brief   translates VTK state into the VTK-free core's types (private to the module)
  *
- * A vtkVolumeProperty to sampled transfer functions, a renderer's lights and a camera to core
- * lights and camera (the image's arrays: vtkAVSDataTranslator). Every check of the input lives
- * here, so all the module's classes reject the same bad input with the same messages.
+ * A renderer's lights and a camera to core lights and camera (the image's arrays:
+ * vtkAVSDataTranslator; the volume property: vtkAVSPropertyTranslator).
  */
 #ifndef vtkAVSSceneTranslator_h
 #define vtkAVSSceneTranslator_h
 
 #include "Camera.h"
 #include "Lights.h"
-#include "TransferFunction.h"
 
 #include <string>
 #include <vector>
 
 class vtkCamera;
 class vtkRenderer;
-class vtkVolumeProperty;
 
 class vtkAVSSceneTranslator
 {
 public:
-  /// Samples the colour and scalar-opacity functions of component 0 over [lo, hi].
-  static bool ToTransferFunction(vtkVolumeProperty* property,
-    double lo,
-    double hi,
-    avs::TransferFunction& tf,
-    double& unitDistance,
-    std::string& error);
-
   /// The switched-on lights of `renderer` in world space (headlights follow the camera, camera
   /// lights are transformed by it). A renderer without lights gets a headlight, as VTK does.
   /// VTK light units (ALGORITHM.md section 1): irradiance = 4 pi x intensity x diffuse colour x

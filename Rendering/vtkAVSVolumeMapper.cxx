@@ -2,11 +2,13 @@
 
 #include "AmbientOcclusion.h"
 #include "AveragedExtinction.h"
+#include "Classifier.h"
 #include "LightVolume.h"
 #include "ReferenceRenderer.h"
 #include "ScatteringParameters.h"
 #include "ScatteringTable.h"
 #include "vtkAVSDataTranslator.h"
+#include "vtkAVSPropertyTranslator.h"
 #include "vtkAVSRayCaster.h"
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSSceneTranslator.h"
@@ -37,25 +39,25 @@ struct vtkAVSVolumeMapper::Internals
   vtkDataArray* ArrayObject = nullptr;
   vtkMTimeType ArrayTime = 0;
   vtkAVSDataTranslator::Selection Selection;
-  avs::Grid Scalars;
-  double ScalarRange[2] = { 0.0, 1.0 };
+  /// The volume as the core classifies it: the grids from the data, the functions from the
+  /// property (Scalars empty: nothing converted).
+  avs::VolumeScene Scene;
+  std::vector<std::array<double, 2>> Ranges; ///< finite range of each component
   bool ScalarsUploaded = false;
 
   vtkVolumeProperty* PropertyObject = nullptr;
   vtkMTimeType PropertyTime = 0;
-  double UnitDistance = 1.0;
-  avs::TransferFunction Transfer;
+  vtkMTimeType ClassificationTime = 0; ///< this mapper's MTime when the property was converted
   bool TransferUploaded = false;
 
   // Versions of the derived volumes: a change of a version invalidates what uses it.
   int DataVersion = 0;
   int TransferVersion = 0;
   int ExtinctionKey[2] = { -1, -1 }; // data, opacity versions of Extinction
-  // What sigma_t depends on, and its version (a colour change leaves it).
+  // What sigma_t depends on besides the data (avs::ExtinctionKey), and its version (a colour
+  // change leaves it).
   int OpacityVersion = 0;
-  std::vector<float> ExtinctionOpacity;
-  double ExtinctionRange[2] = { 0.0, 0.0 };
-  double ExtinctionUnitDistance = -1.0;
+  std::vector<double> ExtinctionInputs;
   avs::Grid Extinction;
 
   // Ambient scattering.
@@ -176,10 +178,14 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   selection.ArrayName = this->ArrayName ? this->ArrayName : "";
   bool cellData = false;
   vtkDataArray* array = vtkAVSDataTranslator::Select(input, selection, cellData, error);
-  if (!array)
+  auto forget = [&in]()
   {
     in.DataObject = nullptr;
-    in.Scalars = avs::Grid();
+    in.Scene = avs::VolumeScene();
+  };
+  if (!array)
+  {
+    forget();
     vtkErrorMacro("Cannot render: " << error);
     return false;
   }
@@ -187,35 +193,29 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     selection.ArrayAccessMode == in.Selection.ArrayAccessMode &&
     selection.ArrayId == in.Selection.ArrayId && selection.ArrayName == in.Selection.ArrayName;
   if (input != in.DataObject || input->GetMTime() != in.DataTime || array != in.ArrayObject ||
-    array->GetMTime() != in.ArrayTime || !sameSelection || in.Scalars.Values.empty())
+    array->GetMTime() != in.ArrayTime || !sameSelection || in.Scene.Scalars.Values.empty())
   {
     vtkAVSDataTranslator::Volume data;
     std::string warning;
     if (!vtkAVSDataTranslator::ToVolume(input, selection, data, error, warning))
     {
-      in.DataObject = nullptr;
-      in.Scalars = avs::Grid();
+      forget();
       vtkErrorMacro("Cannot render: " << error);
       return false;
     }
-    if (data.Components.size() != 1)
+    if (!warning.empty())
     {
-      in.DataObject = nullptr;
-      in.Scalars = avs::Grid();
-      vtkErrorMacro("Cannot render: unsupported number of scalar components: "
-        << data.Components.size() << " (only single-component scalars are supported)");
-      return false;
+      vtkWarningMacro(<< warning << ".");
     }
-    if (data.NaNVoxels || data.Infinities)
+    in.Scene = avs::VolumeScene();
+    in.Scene.Scalars = std::move(data.Components[0]);
+    for (std::size_t c = 1; c < data.Components.size(); ++c)
     {
-      in.DataObject = nullptr;
-      in.Scalars = avs::Grid();
-      vtkErrorMacro("Cannot render: the scalars contain NaN or infinite values");
-      return false;
+      in.Scene.Medium.Components.emplace_back();
+      in.Scene.Medium.Components.back().Values = std::move(data.Components[c]);
     }
-    in.Scalars = std::move(data.Components[0]);
-    in.ScalarRange[0] = data.Ranges[0][0];
-    in.ScalarRange[1] = data.Ranges[0][1];
+    in.Scene.Medium.Validity = std::move(data.Validity);
+    in.Ranges = data.Ranges;
     in.DataObject = input;
     in.DataTime = input->GetMTime();
     in.ArrayObject = array;
@@ -231,27 +231,31 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     vtkErrorMacro("Cannot render: the volume has no property.");
     return false;
   }
-  if (property != in.PropertyObject || property->GetMTime() != in.PropertyTime)
+  if (property != in.PropertyObject || property->GetMTime() != in.PropertyTime ||
+    this->GetMTime() != in.ClassificationTime)
   {
-    if (!vtkAVSSceneTranslator::ToTransferFunction(
-          property, in.ScalarRange[0], in.ScalarRange[1], in.Transfer, in.UnitDistance, error))
+    std::string warning;
+    if (!vtkAVSPropertyTranslator::ToMedium(property, in.Ranges, false, in.Scene, error, warning))
     {
+      in.PropertyObject = nullptr;
       vtkErrorMacro("Cannot render: " << error);
       return false;
     }
+    if (!warning.empty())
+    {
+      vtkWarningMacro(<< warning << ".");
+    }
+    this->WarnAboutShading(property);
     in.PropertyObject = property;
     in.PropertyTime = property->GetMTime();
+    in.ClassificationTime = this->GetMTime();
     in.TransferUploaded = false;
     ++in.TransferVersion;
     // Extinction depends on the opacity alone: a change of colour alone rebuilds nothing.
-    if (in.Transfer.Opacity != in.ExtinctionOpacity ||
-      in.Transfer.Minimum != in.ExtinctionRange[0] ||
-      in.Transfer.Maximum != in.ExtinctionRange[1] || in.UnitDistance != in.ExtinctionUnitDistance)
+    std::vector<double> inputs = avs::ExtinctionKey(in.Scene);
+    if (inputs != in.ExtinctionInputs)
     {
-      in.ExtinctionOpacity = in.Transfer.Opacity;
-      in.ExtinctionRange[0] = in.Transfer.Minimum;
-      in.ExtinctionRange[1] = in.Transfer.Maximum;
-      in.ExtinctionUnitDistance = in.UnitDistance;
+      in.ExtinctionInputs = std::move(inputs);
       ++in.OpacityVersion;
     }
   }
@@ -261,11 +265,11 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   p.SampleDistance = this->SampleDistance;
   p.TerminationTransmittance = this->TerminationTransmittance;
   this->FillParameters(p);
-  in.Parameters = p.Resolve(in.Scalars.Geometry);
+  in.Parameters = p.Resolve(in.Scene.Scalars.Geometry);
   const avs::ScatteringParameters& rp = in.Parameters;
 
   // Transforms: data -> world is the volume's matrix; index -> data is the grid's placement.
-  const avs::GridGeometry& g = in.Scalars.Geometry;
+  const avs::GridGeometry& g = in.Scene.Scalars.Geometry;
   vtkNew<vtkMatrix4x4> indexToData;
   for (int r = 0; r < 3; ++r)
   {
@@ -296,7 +300,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   // Uploads of what changed.
   if (!in.ScalarsUploaded)
   {
-    if (!in.RayCaster.UploadScalars(in.Scalars, error))
+    if (!in.RayCaster.UploadScalars(in.Scene, error))
     {
       vtkErrorMacro("Cannot render: " << error);
       return false;
@@ -306,7 +310,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   }
   if (!in.TransferUploaded)
   {
-    if (!in.RayCaster.UploadTransferFunction(in.Transfer, error))
+    if (!in.RayCaster.UploadClassification(in.Scene, error))
     {
       vtkErrorMacro("Cannot render: " << error);
       return false;
@@ -319,7 +323,6 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   {
     return true;
   }
-  avs::VolumeScene scene;
   // Ambient scattering with compute shaders needs no extinction grid on the CPU. (The GPU
   // light-volume pass takes tables of up to MaximumTauNodes tau nodes; larger user tables are
   // marched on the CPU.)
@@ -334,11 +337,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   if (!gpuScattering &&
     (in.ExtinctionKey[0] != in.DataVersion || in.ExtinctionKey[1] != in.OpacityVersion))
   {
-    scene.Transfer = in.Transfer;
-    scene.UnitDistance = in.UnitDistance;
-    scene.Scalars.Geometry = g;
-    scene.Scalars.Values = in.Scalars.Values;
-    in.Extinction = avs::ExtinctionGrid(scene);
+    in.Extinction = avs::ExtinctionGrid(in.Scene);
     in.ExtinctionKey[0] = in.DataVersion;
     in.ExtinctionKey[1] = in.OpacityVersion;
   }
@@ -418,7 +417,6 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     {
       if (!in.RayCaster.ComputeAveragedExtinction(g.Dimensions,
             lightGrid.Dimensions,
-            in.UnitDistance,
             avs::AveragingHalfWidths(rp.AmbientRadius, g.Spacing),
             error))
       {
@@ -430,7 +428,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     {
       in.Averaged = avs::AverageExtinctionOn(in.Extinction, rp.AmbientRadius, lightGrid);
       if (!in.RayCaster.UploadScalarsAveraged(
-            in.Scalars, avs::ResampleTrilinear(in.Averaged, g), error))
+            in.Scene, avs::ResampleTrilinear(in.Averaged, g), error))
       {
         vtkErrorMacro("Cannot render: " << error);
         return false;
@@ -513,6 +511,34 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
   return true;
 }
 
+void vtkAVSVolumeMapper::WarnAboutShading(vtkVolumeProperty* property)
+{
+  // Phong shading (ShadeOn with the ambient, diffuse, specular coefficients and the specular
+  // power) has no meaning for these physically based mappers: EA and AO are never lit by the
+  // property's coefficients, ambient scattering is always lit by its scattering model.
+  std::string warning;
+  if (property->GetShade())
+  {
+    if (this->GetEffect() != 2)
+    {
+      warning = "ShadeOn has no effect on " + std::string(this->GetClassName()) +
+        ": it does not shade (vtkAmbientScatteringVolumeMapper lights the volume by scattering)";
+    }
+    else if (property->GetAmbient() != 0.1 || property->GetDiffuse() != 0.7 ||
+      property->GetSpecular() != 0.2 || property->GetSpecularPower() != 10.0)
+    {
+      warning = "the property's ambient, diffuse and specular coefficients and specular power are "
+                "not used: ambient scattering lights the volume through its scattering model "
+                "(Albedo, Anisotropy, the renderer's lights)";
+    }
+  }
+  if (!warning.empty() && warning != this->ShadingWarning)
+  {
+    vtkWarningMacro(<< warning << ".");
+  }
+  this->ShadingWarning = warning;
+}
+
 void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 {
   auto& in = *this->Internal;
@@ -550,11 +576,10 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
                               : avs::RenderMode::AmbientScattering);
   frame.Parameters = in.Parameters;
   frame.WorldToIndex = in.WorldToIndex;
-  frame.Dimensions = in.Scalars.Geometry.Dimensions;
-  frame.Border = in.Scalars.Geometry.Border;
+  frame.Dimensions = in.Scene.Scalars.Geometry.Dimensions;
+  frame.Border = in.Scene.Scalars.Geometry.Border;
   frame.LightVolumeDimensions = in.LightGridDimensions;
   frame.OcclusionDimensions = in.OcclusionDimensions;
-  frame.UnitDistance = in.UnitDistance;
   frame.Lights = in.WorldLights;
   frame.Jitter = this->UseJittering != 0;
   frame.Prop = volume;

@@ -3,9 +3,11 @@
  * @brief   the GPU ray-casting machinery shared by the module's three volume mappers
  *
  * Abstract base of vtkEmissionAbsorptionVolumeMapper, vtkAmbientOcclusionVolumeMapper and
- * vtkAmbientScatteringVolumeMapper. It renders vtkImageData (single-component point scalars of
- * any type; origin, spacing, extent and direction matrix honoured; the vtkVolume's transform
- * applied) with the vtkVolumeProperty's colour and scalar-opacity functions and unit distance,
+ * vtkAmbientScatteringVolumeMapper. It renders vtkImageData (point or cell scalars of any type,
+ * 1-4 components, selected as vtkGPUVolumeRayCastMapper selects them with ScalarMode and
+ * SelectScalarArray; origin, spacing, extent and direction matrix honoured; the vtkVolume's
+ * transform applied) with the vtkVolumeProperty's colour and scalar-opacity functions and unit
+ * distances, component modes and weights, gradient opacity and interpolation type,
  * by a full-screen GPU ray caster that clips rays to the volume box and to the depth of opaque
  * geometry drawn before, and composites its premultiplied result over the framebuffer as VTK's
  * own mappers do. The camera may be inside the volume; perspective and parallel projections,
@@ -16,8 +18,13 @@
  * volume, a change of data, transfer function or medium parameters rebuilds what depends on it.
  * The counters below say how often each happened.
  *
- * Bad input — no or empty image, no point scalars, more than one component, NaN or infinite
- * values, bad spacing, a volume too large for the GPU — gives a vtkErrorMacro and draws nothing.
+ * NaN voxels are empty space and infinities are clamped to the finite range, with one warning
+ * that counts them. The property's shading flags (ShadeOn, ambient, diffuse, specular) have no
+ * meaning for these physically based mappers: a warning says so where they would mislead.
+ *
+ * Bad input — no or empty image, no such array, more than four components, three dependent
+ * components, bad spacing, a volume too large for the GPU — gives a vtkErrorMacro and draws
+ * nothing.
  */
 #ifndef vtkAVSVolumeMapper_h
 #define vtkAVSVolumeMapper_h
@@ -26,12 +33,15 @@
 #include "vtkVolumeMapper.h"
 
 #include <memory> // for std::unique_ptr
+#include <string> // for std::string
 
 namespace avs
 {
 struct ScatteringParameters;
 class ScatteringTable;
 }
+
+class vtkVolumeProperty;
 
 class VTKRENDERINGAMBIENTSCATTERING_EXPORT vtkAVSVolumeMapper : public vtkVolumeMapper
 {
@@ -146,6 +156,9 @@ private:
   struct Internals;
   std::unique_ptr<Internals> Internal;
   bool Prepare(vtkRenderer* renderer, vtkVolume* volume);
+  // One warning when the property's shading flags ask for what this mapper does not do.
+  void WarnAboutShading(vtkVolumeProperty* property);
+  std::string ShadingWarning;
 };
 
 #endif

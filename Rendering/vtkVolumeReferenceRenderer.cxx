@@ -3,6 +3,7 @@
 #include "PathTracer.h"
 #include "ReferenceRenderer.h"
 #include "vtkAVSDataTranslator.h"
+#include "vtkAVSPropertyTranslator.h"
 #include "vtkAVSSceneTranslator.h"
 #include "vtkAmbientScatteringTable.h"
 
@@ -173,32 +174,31 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
     vtkErrorMacro("Cannot render: " << error);
     return 1;
   }
-  if (data.Components.size() != 1)
+  if (!warning.empty())
   {
-    vtkErrorMacro("Cannot render: unsupported number of scalar components: "
-      << data.Components.size() << " (only single-component scalars are supported)");
-    return 1;
-  }
-  if (data.NaNVoxels || data.Infinities)
-  {
-    vtkErrorMacro("Cannot render: the scalars contain NaN or infinite values");
-    return 1;
+    vtkWarningMacro(<< warning << ".");
   }
   scene.Scalars = std::move(data.Components[0]);
+  for (std::size_t c = 1; c < data.Components.size(); ++c)
+  {
+    scene.Medium.Components.emplace_back();
+    scene.Medium.Components.back().Values = std::move(data.Components[c]);
+  }
+  scene.Medium.Validity = std::move(data.Validity);
   if (!this->VolumeProperty)
   {
     vtkErrorMacro("Cannot render: no volume property set.");
     return 1;
   }
-  if (!vtkAVSSceneTranslator::ToTransferFunction(this->VolumeProperty,
-        data.Ranges[0][0],
-        data.Ranges[0][1],
-        scene.Transfer,
-        scene.UnitDistance,
-        error))
+  if (!vtkAVSPropertyTranslator::ToMedium(
+        this->VolumeProperty, data.Ranges, false, scene, error, warning))
   {
     vtkErrorMacro("Cannot render: " << error);
     return 1;
+  }
+  if (!warning.empty())
+  {
+    vtkWarningMacro(<< warning << ".");
   }
   vtkCamera* camera =
     this->Camera ? this->Camera : (this->Renderer ? this->Renderer->GetActiveCamera() : nullptr);

@@ -14,7 +14,8 @@
  * composited over Background) and a 4-component float array "Radiance" (premultiplied radiance
  * and alpha = 1 - transmittance).
  *
- * Bad input (no or empty image, no scalars, more than one component, NaN or infinite values,
+ * NaN voxels are empty space, infinities are clamped (one warning counts them). Bad input (no
+ * or empty image, no such array, more than four components, three dependent components,
  * bad spacing, no volume property, a missing or corrupt scattering table) gives a vtkErrorMacro
  * and an empty output. Progress events are fired during the precomputation and the rendering.
  */

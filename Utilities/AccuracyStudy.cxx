@@ -4,6 +4,7 @@
 #include "ProceduralVolume.h"
 
 #include "vtkAVSDataTranslator.h"
+#include "vtkAVSPropertyTranslator.h"
 #include "vtkAVSSceneTranslator.h"
 #include "vtkAmbientOcclusionVolumeMapper.h"
 #include "vtkAmbientScatteringVolumeMapper.h"
@@ -260,8 +261,8 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
     vtkAVSDataTranslator::Volume volume;
     vtkAVSDataTranslator::ToVolume(data, {}, volume, error, warning);
     core.Scalars = std::move(volume.Components.at(0));
-    vtkAVSSceneTranslator::ToTransferFunction(
-      scene.Property, 0.0, 1.0, core.Transfer, core.UnitDistance, error);
+    vtkAVSPropertyTranslator::ToMedium(
+      scene.Property, { { 0.0, 1.0 } }, false, core, error, warning);
     core.Lights = vtkAVSSceneTranslator::ToLights(renderer, renderer->GetActiveCamera());
     avs::ScatteringParameters p;
     p.AmbientRadius = settings.AmbientRadius;

@@ -3,10 +3,12 @@
 // trilinearly interpolated scalar, so inside a cell it takes values of the transfer function
 // between the smallest and the largest scalar at the cell's corner voxels; the majorant is the
 // largest sigma_t of the transfer function over that scalar interval (exact for the sampled,
-// linearly interpolated table). Delta and ratio tracking walk the cells with a DDA.
+// linearly interpolated table; Classifier::Bound, which also bounds several components, gradient
+// opacity, NaN voxels and masks). Delta and ratio tracking walk the cells with a DDA.
 #ifndef avs_MajorantGrid_h
 #define avs_MajorantGrid_h
 
+#include "Classifier.h"
 #include "Grid.h"
 #include "TransferFunction.h"
 
@@ -22,6 +24,9 @@ public:
   /// Majorants of sigma_t for `scalars` with `tf` and unit distance `u`, cells of `cellSize`
   /// voxels per axis (cellSize >= the whole grid gives one global majorant).
   MajorantGrid(const Grid& scalars, const TransferFunction& tf, double unitDistance, int cellSize);
+  /// Majorants of what `classifier` classifies on the lattice `geometry` (components,
+  /// gradient opacity, NaN voxels and masks included: Classifier::Bound).
+  MajorantGrid(const Classifier& classifier, const GridGeometry& geometry, int cellSize);
 
   int CellSize() const { return this->Size; }
   const std::array<int, 3>& Cells() const { return this->Count; }

@@ -16,25 +16,18 @@ namespace avs
 VolumeTracker::VolumeTracker(const VolumeScene& scene, const MajorantGrid& majorants)
   : Scene(scene)
   , Majorants(majorants)
+  , Classify(scene)
 {
 }
 
 double VolumeTracker::Extinction(const Vec3& world, Vec3* color) const
 {
-  const double s = this->Scene.Scalars.SampleWorld(world, std::numeric_limits<double>::quiet_NaN());
-  if (!(s == s))
-  {
-    if (color)
-    {
-      *color = { 0, 0, 0 };
-    }
-    return 0.0;
-  }
+  const Classified c = this->Classify.AtWorld(world);
   if (color)
   {
-    *color = this->Scene.Transfer.ColorAt(s);
+    *color = c.Color;
   }
-  return OpacityToExtinction(this->Scene.Transfer.OpacityAt(s), this->Scene.UnitDistance);
+  return c.SigmaT;
 }
 
 // Walks the majorant cells along the ray inside the volume box, sampling tentative collisions
@@ -262,7 +255,7 @@ Image RenderPathTraced(const VolumeScene& scene,
     return image;
   }
   const MajorantGrid majorants(
-    scene.Scalars, scene.Transfer, scene.UnitDistance, settings.MajorantCellSize);
+    Classifier(scene), scene.Scalars.Geometry, settings.MajorantCellSize);
   const VolumeTracker tracker(scene, majorants);
   const PathContext context{ scene, p, settings, tracker };
   std::vector<double> sum(4 * static_cast<std::size_t>(image.Width) * image.Height, 0.0);

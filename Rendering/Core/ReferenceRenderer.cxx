@@ -2,6 +2,7 @@
 
 #include "AmbientOcclusion.h"
 #include "AveragedExtinction.h"
+#include "Classifier.h"
 #include "Extinction.h"
 #include "LightVolume.h"
 #include "Parallel.h"
@@ -25,22 +26,24 @@ Vec3 Image::Composited(int x, int y, const Vec3& background) const
 Grid ExtinctionGrid(const VolumeScene& scene)
 {
   Grid out(scene.Scalars.Geometry);
-  for (std::size_t i = 0; i < out.Values.size(); ++i)
-  {
-    out.Values[i] = static_cast<float>(
-      OpacityToExtinction(scene.Transfer.OpacityAt(scene.Scalars.Values[i]), scene.UnitDistance));
-  }
+  const Classifier classifier(scene);
+  const auto& n = out.Geometry.Dimensions;
+  ParallelFor(n[2],
+    [&](std::int64_t b, std::int64_t e)
+    {
+      for (std::int64_t k = b; k < e; ++k)
+        for (int j = 0; j < n[1]; ++j)
+          for (int i = 0; i < n[0]; ++i)
+          {
+            out.At(i, j, static_cast<int>(k)) =
+              static_cast<float>(classifier.AtVoxel(i, j, static_cast<int>(k)).SigmaT);
+          }
+    });
   return out;
 }
 
 namespace
 {
-inline double SampleLocal(const Grid& g, const Vec3& local, double outside)
-{
-  const Vec3& s = g.Geometry.Spacing;
-  return g.SampleIndex({ local.x / s.x, local.y / s.y, local.z / s.z }, outside);
-}
-
 // A grid over the data's lattice (light volumes, averaged extinction, occlusion) at a local point
 // of the volume, clamped into its lattice as the GPU's textures clamp to the edge: cell data's
 // border reaches half a cell beyond the lattice.
@@ -126,6 +129,7 @@ namespace
 
 // One ray, front to back. Returns premultiplied L and alpha.
 void CastRay(const VolumeScene& scene,
+  const Classifier& classifier,
   const ScatteringParameters& p,
   const PrecomputedVolumes& v,
   RenderMode mode,
@@ -148,19 +152,12 @@ void CastRay(const VolumeScene& scene,
   const double lagSteps = p.AmbientRadius / dt;
   const int lag = static_cast<int>(std::floor(lagSteps));
   const double fraction = lagSteps - lag;
-  const double nan = std::numeric_limits<double>::quiet_NaN();
   // sigma_t and colour at a local point: classification after interpolation, as on the GPU.
   auto classify = [&](const Vec3& x, double& sigmaT, Vec3& color)
   {
-    const double s = SampleLocal(scene.Scalars, x, nan);
-    if (!(s == s))
-    {
-      sigmaT = 0.0;
-      color = { 0, 0, 0 };
-      return;
-    }
-    sigmaT = OpacityToExtinction(scene.Transfer.OpacityAt(s), scene.UnitDistance);
-    color = scene.Transfer.ColorAt(s);
+    const Classified c = classifier.AtLocal(x);
+    sigmaT = c.SigmaT;
+    color = c.Color;
   };
   // Ambient in-scattering from the ball around the sample x (eqs. 8.8-8.9), per unit of the
   // transmittance and of the ray's length.
@@ -266,6 +263,7 @@ Image RenderReference(const VolumeScene& scene,
   image.Height = std::max(0, height);
   image.Pixels.assign(4 * static_cast<std::size_t>(image.Width) * image.Height, 0.0f);
   std::atomic<int> rows{ 0 };
+  const Classifier classifier(scene);
   const std::thread::id caller = std::this_thread::get_id();
   ParallelFor(image.Height,
     [&](std::int64_t b, std::int64_t e)
@@ -275,7 +273,7 @@ Image RenderReference(const VolumeScene& scene,
         for (int x = 0; x < image.Width; ++x)
         {
           const Ray ray = camera.GenerateRay(x + 0.5, y + 0.5, image.Width, image.Height);
-          CastRay(scene, p, volumes, mode, ray, image.At(x, static_cast<int>(y)));
+          CastRay(scene, classifier, p, volumes, mode, ray, image.At(x, static_cast<int>(y)));
         }
         const int done = ++rows;
         if (progress && std::this_thread::get_id() == caller)

@@ -7,6 +7,7 @@
 #include "Camera.h"
 #include "Grid.h"
 #include "Lights.h"
+#include "Medium.h"
 #include "ScatteringParameters.h"
 #include "ScatteringTable.h"
 #include "TransferFunction.h"
@@ -19,13 +20,16 @@
 namespace avs
 {
 
-/// What the renderers draw: point scalars on a grid, the transfer functions, the unit distance of
-/// the opacity, the lights, and the background behind the volume.
+/// What the renderers draw: the scalars on a grid, the transfer functions, the unit distance of
+/// the opacity, the lights, and the background behind the volume. Scalars, Transfer and
+/// UnitDistance are component 0; Medium holds the rest (more components, gradient opacity,
+/// interpolation, NaN voxels, a mask), and Classifier turns both into sigma_t and colour.
 struct VolumeScene
 {
   Grid Scalars;
   TransferFunction Transfer;
   double UnitDistance = 1.0;
+  MediumOptions Medium;
   std::vector<Light> Lights;
   Vec3 Background{ 0, 0, 0 };
 };
@@ -61,7 +65,7 @@ struct PrecomputedVolumes
   ScatteringSlice Slice;          ///< A and F for the current g and albedo
 };
 
-/// sigma_t at every voxel from the scalars and the opacity transfer function.
+/// sigma_t at every voxel of the scalars' grid, classified (Classifier::AtVoxel).
 Grid ExtinctionGrid(const VolumeScene& scene);
 
 /// Computes what `mode` needs (the table is needed for ambient scattering). Returns false and

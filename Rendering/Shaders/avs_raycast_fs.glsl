@@ -3,8 +3,9 @@
 // pixel from the inverse view-projection (camera inside the volume and parallel projection
 // included), clipped to the volume box and to the opaque geometry's depth, marched front to back
 // in equal steps, with the mapper's effect snippet (declarations, per-ray set-up and per-sample
-// code) put in at the three effect markers below. An effect may define AVS_EFFECT_VOLUME (a
-// sampler3D with the scalar in .r, fetched once per sample instead of u_scalars) and
+// code) put in at the three effect markers below. Each sample fetches one texel of the volume
+// texture (AVS_VOLUME_TEXTURE: the scalars, or ambient scattering's texture that holds them
+// beside the averaged extinction) and classifies it (avs_classify.glsl). An effect may define
 // AVS_EFFECT_TERMINATION (then its bool EffectContinues(float T, int i) ends the ray). The CPU
 // reference (Rendering/Core/ReferenceRenderer.cxx) computes the same sums in double precision.
 
@@ -15,7 +16,6 @@ in vec2 texCoord; // position in the viewport, [0, 1]^2 (from the quad's vertex 
 uniform mat4 u_ndcToWorld;   // inverse of the camera's world -> NDC
 uniform mat4 u_worldToIndex; // world -> continuous voxel index of the data
 uniform sampler2D u_depth;   // depth of what the renderer drew before
-uniform sampler3D u_scalars; // point scalars, component 0
 uniform vec3 u_dimensions;   // voxels per axis
 uniform float u_border;      // the box reaches this many voxels beyond them (cell data: 0.5)
 uniform float u_sampleDistance; // world units
@@ -24,7 +24,8 @@ uniform int u_jitter;           // 1: jitter the first sample per pixel
 
 const float PI = 3.14159265358979;
 
-// Classify(s): colour and extinction of a scalar (avs_classify.glsl).
+// Classify(texel, coordinate): colour and extinction of a sample (avs_classify.glsl), which
+// declares the volume texture AVS_VOLUME_TEXTURE.
 //AVS::Classify::Dec
 
 // Henyey-Greenstein, mu = cosine between the propagation directions of incoming and scattered
@@ -81,7 +82,6 @@ void main()
   vec3 inverseDimensions = 1.0 / u_dimensions;
   vec3 firstCoordinate = (io + (t0 + offset * dt) * id + 0.5) * inverseDimensions;
   vec3 stepCoordinate = dt * id * inverseDimensions;
-  InitClassify();
 
   //AVS::Effect::Init
 
@@ -100,13 +100,8 @@ void main()
     float t = t0 + (float(i) + offset) * dt;
     vec3 index = io + t * id;
     vec3 coordinate = firstCoordinate + float(i) * stepCoordinate;
-#ifdef AVS_EFFECT_VOLUME
-    // The effect's own texture, with the scalar in .r and its per-sample data in .g.
-    vec4 voxel = textureLod(AVS_EFFECT_VOLUME, coordinate, 0.0);
-#else
-    vec4 voxel = vec4(textureLod(u_scalars, coordinate, 0.0).r);
-#endif
-    vec4 here = Classify(voxel.r);
+    vec4 voxel = textureLod(AVS_VOLUME_TEXTURE, coordinate, 0.0);
+    vec4 here = Classify(voxel, coordinate);
     float extinction = exp(-here.a * dt);
     //AVS::Effect::Sample
     if (T >= u_termination)
