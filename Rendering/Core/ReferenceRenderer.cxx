@@ -52,6 +52,19 @@ inline double SampleLocalClamped(const Grid& g, const Vec3& local)
   const Vec3& s = g.Geometry.Spacing;
   return g.SampleClamped({ local.x / s.x, local.y / s.y, local.z / s.z });
 }
+// The same at the nearest lattice point.
+inline double NearestLocalClamped(const Grid& g, const Vec3& local)
+{
+  const Vec3& s = g.Geometry.Spacing;
+  const auto& n = g.Geometry.Dimensions;
+  int i[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double c = std::clamp(local[a] / s[a], 0.0, static_cast<double>(n[a] - 1));
+    i[a] = std::min(static_cast<int>(std::floor(c + 0.5)), n[a] - 1);
+  }
+  return g.At(i[0], i[1], i[2]);
+}
 } // namespace
 
 bool Precompute(const VolumeScene& scene,
@@ -159,6 +172,7 @@ void CastRay(const VolumeScene& scene,
     sigmaT = c.SigmaT;
     color = c.Color;
   };
+  const bool nearest = scene.Medium.Sampling == Interpolation::Nearest;
   // Ambient in-scattering from the ball around the sample x (eqs. 8.8-8.9), per unit of the
   // transmittance and of the ray's length.
   auto inscattered = [&](const Vec3& x)
@@ -170,7 +184,10 @@ void CastRay(const VolumeScene& scene,
     {
       return Vec3{ 0, 0, 0 };
     }
-    const double tau = p.AmbientRadius * SampleLocalClamped(v.AveragedAtVoxels, x);
+    // The GPU keeps it beside the scalars in one texture, read with the interpolation type.
+    const double tau = p.AmbientRadius *
+      (nearest ? NearestLocalClamped(v.AveragedAtVoxels, x)
+               : SampleLocalClamped(v.AveragedAtVoxels, x));
     const Vec3 world = geometry.LocalToWorld(x);
     Vec3 inscatter{ 0, 0, 0 };
     for (std::size_t j = 0; j < scene.Lights.size(); ++j)
