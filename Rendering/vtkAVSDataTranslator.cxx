@@ -235,6 +235,7 @@ bool vtkAVSDataTranslator::ToVolume(vtkImageData* image,
   }
   volume.CellData = cellData;
   volume.Array = scalars;
+  volume.ScalarType = scalars->GetDataType();
   for (int c = 0; c < components; ++c)
   {
     avs::Grid grid(geometry);

@@ -56,6 +56,7 @@ public:
     vtkIdType NaNVoxels = 0;       ///< voxels with a NaN component
     vtkIdType Infinities = 0;      ///< infinite values clamped
     bool CellData = false;         ///< samples at the cell centres
+    int ScalarType = 0;            ///< the array's VTK type
     vtkDataArray* Array = nullptr; ///< the array that was converted (not owned)
   };
 

@@ -85,6 +85,27 @@ Table GradientTable(vtkVolumeProperty* property, int index, const std::array<dou
   return go;
 }
 
+// The values that VTK's volume texture maps to [0, 1] for a scalar type (normalised integer
+// textures; floats as they are; wider types are scaled over their range before the upload).
+std::array<double, 2> DirectColorRange(int scalarType, const std::array<double, 2>& range)
+{
+  switch (scalarType)
+  {
+    case VTK_UNSIGNED_CHAR:
+      return { 0.0, 255.0 };
+    case VTK_SIGNED_CHAR:
+      return { 0.0, 127.0 };
+    case VTK_UNSIGNED_SHORT:
+      return { 0.0, 65535.0 };
+    case VTK_SHORT:
+      return { 0.0, 32767.0 };
+    case VTK_FLOAT:
+      return { 0.0, 1.0 };
+    default:
+      return Widened(range);
+  }
+}
+
 bool UnitDistance(vtkVolumeProperty* property, int index, double& u, std::string& error)
 {
   u = property->GetScalarOpacityUnitDistance(index);
@@ -127,6 +148,7 @@ bool vtkAVSPropertyTranslator::ToTransferFunction(vtkVolumeProperty* property,
 
 bool vtkAVSPropertyTranslator::ToMedium(vtkVolumeProperty* property,
   const std::vector<std::array<double, 2>>& ranges,
+  int scalarType,
   bool labelMap,
   avs::VolumeScene& scene,
   std::string& error,
@@ -223,7 +245,8 @@ bool vtkAVSPropertyTranslator::ToMedium(vtkVolumeProperty* property,
     const int last = count - 1;
     for (int c = 0; c < last; ++c)
     {
-      const auto r = Widened(ranges[c]);
+      // RGBA: the colour is the component as VTK's texture holds it, [0, 1] over r.
+      const auto r = count == 4 ? DirectColorRange(scalarType, ranges[c]) : Widened(ranges[c]);
       if (!ToTransferFunction(property, 0, r[0], r[1], transferOf(c), error))
       {
         return false;

@@ -43,6 +43,7 @@ struct vtkAVSVolumeMapper::Internals
   /// property (Scalars empty: nothing converted).
   avs::VolumeScene Scene;
   std::vector<std::array<double, 2>> Ranges; ///< finite range of each component
+  int ScalarType = 0;
   bool ScalarsUploaded = false;
 
   vtkVolumeProperty* PropertyObject = nullptr;
@@ -216,6 +217,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     }
     in.Scene.Medium.Validity = std::move(data.Validity);
     in.Ranges = data.Ranges;
+    in.ScalarType = data.ScalarType;
     in.DataObject = input;
     in.DataTime = input->GetMTime();
     in.ArrayObject = array;
@@ -235,7 +237,8 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     this->GetMTime() != in.ClassificationTime)
   {
     std::string warning;
-    if (!vtkAVSPropertyTranslator::ToMedium(property, in.Ranges, false, in.Scene, error, warning))
+    if (!vtkAVSPropertyTranslator::ToMedium(
+          property, in.Ranges, in.ScalarType, false, in.Scene, error, warning))
     {
       in.PropertyObject = nullptr;
       vtkErrorMacro("Cannot render: " << error);

@@ -191,7 +191,7 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
     return 1;
   }
   if (!vtkAVSPropertyTranslator::ToMedium(
-        this->VolumeProperty, data.Ranges, false, scene, error, warning))
+        this->VolumeProperty, data.Ranges, data.ScalarType, false, scene, error, warning))
   {
     vtkErrorMacro("Cannot render: " << error);
     return 1;

@@ -262,7 +262,7 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
     vtkAVSDataTranslator::ToVolume(data, {}, volume, error, warning);
     core.Scalars = std::move(volume.Components.at(0));
     vtkAVSPropertyTranslator::ToMedium(
-      scene.Property, { { 0.0, 1.0 } }, false, core, error, warning);
+      scene.Property, { { 0.0, 1.0 } }, VTK_FLOAT, false, core, error, warning);
     core.Lights = vtkAVSSceneTranslator::ToLights(renderer, renderer->GetActiveCamera());
     avs::ScatteringParameters p;
     p.AmbientRadius = settings.AmbientRadius;
