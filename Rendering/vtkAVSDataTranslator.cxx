@@ -324,3 +324,57 @@ bool vtkAVSDataTranslator::ToVolume(vtkImageData* image,
   }
   return true;
 }
+
+bool vtkAVSDataTranslator::ToMask(vtkImageData* mask,
+  const avs::GridGeometry& volume,
+  avs::Grid& out,
+  std::string& error)
+{
+  out = avs::Grid();
+  bool cellData = false;
+  vtkDataArray* scalars = Select(mask, Selection(), cellData, error);
+  if (!scalars)
+  {
+    error = "the mask: " + error;
+    return false;
+  }
+  int dims[3];
+  mask->GetDimensions(dims);
+  const int shift = cellData ? 1 : 0;
+  const int n[3] = { dims[0] - shift, dims[1] - shift, dims[2] - shift };
+  const auto& v = volume.Dimensions;
+  if (n[0] != v[0] || n[1] != v[1] || n[2] != v[2] ||
+    scalars->GetNumberOfTuples() != static_cast<vtkIdType>(volume.NumberOfPoints()))
+  {
+    std::ostringstream os;
+    os << "the mask's " << (cellData ? "cells" : "points") << " (" << n[0] << " x " << n[1] << " x "
+       << n[2] << ") do not match the volume's samples (" << v[0] << " x " << v[1] << " x " << v[2]
+       << ")";
+    error = os.str();
+    return false;
+  }
+  out = avs::Grid(volume);
+  const vtkIdType count = scalars->GetNumberOfTuples();
+  const int components = scalars->GetNumberOfComponents();
+  switch (scalars->GetDataType())
+  {
+    vtkTemplateMacro(CopyComponent(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)),
+      count,
+      components,
+      0,
+      out.Values.data()));
+    default:
+      for (vtkIdType i = 0; i < count; ++i)
+      {
+        out.Values[i] = static_cast<float>(scalars->GetComponent(i, 0));
+      }
+  }
+  for (float& value : out.Values)
+  {
+    if (std::isnan(value))
+    {
+      value = 0.0f;
+    }
+  }
+  return true;
+}

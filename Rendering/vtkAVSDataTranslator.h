@@ -78,6 +78,17 @@ public:
     std::string& error,
     std::string& warning);
 
+  /// The mask of a volume (vtkGPUVolumeRayCastMapper::SetMaskInput): its point scalars, else
+  /// its cell scalars, first component, on the volume's samples. VTK's mapper reads the mask
+  /// with the volume's texture coordinates, so its samples must match the volume's in number
+  /// (points for point data, cells for cell data); its own origin and spacing are not used.
+  /// NaN mask values count as 0. Returns false with a message when it has no scalars or does
+  /// not match.
+  static bool ToMask(vtkImageData* mask,
+    const avs::GridGeometry& volume,
+    avs::Grid& out,
+    std::string& error);
+
   /// The placement of `image`'s points (CellData false) or of its cell centres (true) as a core
   /// grid geometry, or false with a message in `error` (bad spacing, origin or direction).
   static bool ToGeometry(vtkImageData* image,

@@ -43,6 +43,8 @@ struct vtkAVSVolumeMapper::Internals
   /// property (Scalars empty: nothing converted).
   avs::VolumeScene Scene;
   std::vector<std::array<double, 2>> Ranges; ///< finite range of each component
+  vtkImageData* MaskObject = nullptr;        ///< what Scene.Medium.MaskValues came from
+  vtkMTimeType MaskTime = 0;
   int ScalarType = 0;
   bool ScalarsUploaded = false;
 
@@ -116,6 +118,8 @@ avs::Vec3 Transform(vtkMatrix4x4* m, const avs::Vec3& p)
 }
 } // namespace
 
+vtkCxxSetObjectMacro(vtkAVSVolumeMapper, MaskInput, vtkImageData);
+
 vtkAVSVolumeMapper::vtkAVSVolumeMapper()
   : Internal(new Internals)
 {
@@ -123,6 +127,7 @@ vtkAVSVolumeMapper::vtkAVSVolumeMapper()
 
 vtkAVSVolumeMapper::~vtkAVSVolumeMapper()
 {
+  this->SetMaskInput(nullptr);
   this->Internal->RayCaster.ReleaseGraphicsResources(this->Internal->RayCaster.GetWindow());
 }
 
@@ -227,6 +232,25 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     ++in.DataVersion;
     in.PropertyObject = nullptr; // the scalar range may have changed
   }
+  // The mask, on the volume's samples.
+  vtkImageData* mask = this->MaskInput;
+  if (mask != in.MaskObject || (mask && mask->GetMTime() != in.MaskTime) ||
+    (mask && in.Scene.Medium.MaskValues.Values.empty()))
+  {
+    in.Scene.Medium.MaskValues = avs::Grid();
+    in.MaskObject = nullptr;
+    if (mask &&
+      !vtkAVSDataTranslator::ToMask(
+        mask, in.Scene.Scalars.Geometry, in.Scene.Medium.MaskValues, error))
+    {
+      vtkErrorMacro("Cannot render: " << error);
+      return false;
+    }
+    in.MaskObject = mask;
+    in.MaskTime = mask ? mask->GetMTime() : 0;
+    ++in.DataVersion; // sigma_t depends on it
+    in.PropertyObject = nullptr;
+  }
   vtkVolumeProperty* property = volume->GetProperty();
   if (!property)
   {
@@ -237,8 +261,18 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume)
     this->GetMTime() != in.ClassificationTime)
   {
     std::string warning;
-    if (!vtkAVSPropertyTranslator::ToMedium(
-          property, in.Ranges, in.ScalarType, false, in.Scene, error, warning))
+    avs::MediumOptions& medium = in.Scene.Medium;
+    medium.Mask = medium.MaskValues.Values.empty()
+      ? avs::MaskType::None
+      : (this->MaskType == BinaryMaskType ? avs::MaskType::Binary : avs::MaskType::LabelMap);
+    medium.MaskBlendFactor = this->MaskBlendFactor;
+    if (!vtkAVSPropertyTranslator::ToMedium(property,
+          in.Ranges,
+          in.ScalarType,
+          medium.Mask == avs::MaskType::LabelMap,
+          in.Scene,
+          error,
+          warning))
     {
       in.PropertyObject = nullptr;
       vtkErrorMacro("Cannot render: " << error);
@@ -600,6 +634,10 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "MaskInput: " << this->MaskInput << "\n";
+  os << indent << "MaskType: " << (this->MaskType == BinaryMaskType ? "Binary" : "LabelMap")
+     << "\n";
+  os << indent << "MaskBlendFactor: " << this->MaskBlendFactor << "\n";
   os << indent << "SampleDistance: " << this->SampleDistance
      << (this->SampleDistance > 0 ? "" : " (automatic)") << "\n";
   os << indent << "UseJittering: " << (this->UseJittering ? "On" : "Off") << "\n";

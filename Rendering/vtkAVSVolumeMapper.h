@@ -41,6 +41,7 @@ struct ScatteringParameters;
 class ScatteringTable;
 }
 
+class vtkImageData;
 class vtkVolumeProperty;
 
 class VTKRENDERINGAMBIENTSCATTERING_EXPORT vtkAVSVolumeMapper : public vtkVolumeMapper
@@ -83,6 +84,34 @@ public:
   vtkSetMacro(PrecomputeOnGPU, vtkTypeBool);
   vtkGetMacro(PrecomputeOnGPU, vtkTypeBool);
   vtkBooleanMacro(PrecomputeOnGPU, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * A mask, as vtkGPUVolumeRayCastMapper's (VTK 9.1): image data with as many samples as the
+   * volume (points for point data, cells for cell data; read by sample, its own origin and
+   * spacing unused), its point (else cell) scalars, first component. MaskType
+   * BinaryMaskType: samples whose nearest mask value is <= 0 are empty space (MaskBlendFactor is
+   * not used). LabelMapMaskType (default, as in VTK): label L = the nearest mask value rounded;
+   * samples of label L >= 1 take the property's label functions (vtkVolumeProperty::
+   * SetLabelColor, SetLabelScalarOpacity; labels without them take component 0's), mixed with
+   * the unlabelled medium by MaskBlendFactor (default 1: the label's alone; 0: no labels; in
+   * between, sigma_t = (1 - b) sigma + b sigma_label and the colour their extinction-weighted
+   * mean); label maps need single-component scalars. Default: no mask.
+   */
+  void SetMaskInput(vtkImageData* mask);
+  vtkGetObjectMacro(MaskInput, vtkImageData);
+  enum
+  {
+    BinaryMaskType = 0,
+    LabelMapMaskType
+  };
+  vtkSetClampMacro(MaskType, int, BinaryMaskType, LabelMapMaskType);
+  vtkGetMacro(MaskType, int);
+  void SetMaskTypeToBinary() { this->SetMaskType(BinaryMaskType); }
+  void SetMaskTypeToLabelMap() { this->SetMaskType(LabelMapMaskType); }
+  vtkSetClampMacro(MaskBlendFactor, float, 0.0f, 1.0f);
+  vtkGetMacro(MaskBlendFactor, float);
   ///@}
 
   ///@{
@@ -137,6 +166,9 @@ protected:
   virtual const avs::ScatteringTable* GetScatteringTable() { return nullptr; }
 
   double SampleDistance = 0.0;
+  vtkImageData* MaskInput = nullptr;
+  int MaskType = LabelMapMaskType;
+  float MaskBlendFactor = 1.0f;
   vtkTypeBool UseJittering = 1;
   double TerminationTransmittance = 1.0 / 255.0;
   vtkTypeBool PrecomputeOnGPU = 1;

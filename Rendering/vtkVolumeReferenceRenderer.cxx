@@ -31,6 +31,7 @@ vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, VolumeProperty, vtkVolumeProper
 vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, Renderer, vtkRenderer);
 vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, Camera, vtkCamera);
 vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, ScatteringTable, vtkAmbientScatteringTable);
+vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, MaskInput, vtkImageData);
 
 vtkVolumeReferenceRenderer::vtkVolumeReferenceRenderer()
 {
@@ -44,6 +45,7 @@ vtkVolumeReferenceRenderer::~vtkVolumeReferenceRenderer()
   this->SetRenderer(nullptr);
   this->SetCamera(nullptr);
   this->SetScatteringTable(nullptr);
+  this->SetMaskInput(nullptr);
 }
 
 void vtkVolumeReferenceRenderer::SelectScalarArray(int arrayNum)
@@ -97,6 +99,10 @@ vtkMTimeType vtkVolumeReferenceRenderer::GetMTime()
   if (this->ScatteringTable)
   {
     t = std::max(t, this->ScatteringTable->GetMTime());
+  }
+  if (this->MaskInput)
+  {
+    t = std::max(t, this->MaskInput->GetMTime());
   }
   if (this->Renderer)
   {
@@ -185,13 +191,29 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
     scene.Medium.Components.back().Values = std::move(data.Components[c]);
   }
   scene.Medium.Validity = std::move(data.Validity);
+  if (this->MaskInput)
+  {
+    if (!vtkAVSDataTranslator::ToMask(
+          this->MaskInput, scene.Scalars.Geometry, scene.Medium.MaskValues, error))
+    {
+      vtkErrorMacro("Cannot render: " << error);
+      return 1;
+    }
+    scene.Medium.Mask = this->MaskType == 0 ? avs::MaskType::Binary : avs::MaskType::LabelMap;
+    scene.Medium.MaskBlendFactor = this->MaskBlendFactor;
+  }
   if (!this->VolumeProperty)
   {
     vtkErrorMacro("Cannot render: no volume property set.");
     return 1;
   }
-  if (!vtkAVSPropertyTranslator::ToMedium(
-        this->VolumeProperty, data.Ranges, data.ScalarType, false, scene, error, warning))
+  if (!vtkAVSPropertyTranslator::ToMedium(this->VolumeProperty,
+        data.Ranges,
+        data.ScalarType,
+        scene.Medium.Mask == avs::MaskType::LabelMap,
+        scene,
+        error,
+        warning))
   {
     vtkErrorMacro("Cannot render: " << error);
     return 1;
@@ -339,6 +361,9 @@ void vtkVolumeReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ArrayAccessMode: " << (this->ArrayAccessMode ? "ByName" : "ById") << "\n";
   os << indent << "ArrayId: " << this->ArrayId << "\n";
   os << indent << "ArrayName: " << this->ArrayName << "\n";
+  os << indent << "MaskInput: " << this->MaskInput << "\n";
+  os << indent << "MaskType: " << (this->MaskType == 0 ? "Binary" : "LabelMap") << "\n";
+  os << indent << "MaskBlendFactor: " << this->MaskBlendFactor << "\n";
   os << indent << "VolumeProperty: " << this->VolumeProperty << "\n";
   os << indent << "Renderer: " << this->Renderer << "\n";
   os << indent << "Camera: " << this->Camera << "\n";

@@ -105,6 +105,21 @@ public:
 
   ///@{
   /**
+   * A mask, as on the mappers (vtkAVSVolumeMapper::SetMaskInput): binary or label map
+   * (default, as in VTK), with MaskBlendFactor (default 1). Default: no mask.
+   */
+  void SetMaskInput(vtkImageData* mask);
+  vtkGetObjectMacro(MaskInput, vtkImageData);
+  vtkSetClampMacro(MaskType, int, 0, 1);
+  vtkGetMacro(MaskType, int);
+  void SetMaskTypeToBinary() { this->SetMaskType(0); }
+  void SetMaskTypeToLabelMap() { this->SetMaskType(1); }
+  vtkSetClampMacro(MaskBlendFactor, float, 0.0f, 1.0f);
+  vtkGetMacro(MaskBlendFactor, float);
+  ///@}
+
+  ///@{
+  /**
    * The renderer whose lights light the volume and whose active camera looks at it, unless
    * Camera is set. Without a renderer the camera's headlight is used.
    */
@@ -280,6 +295,9 @@ protected:
   int ArrayAccessMode = 0; // VTK_GET_ARRAY_BY_ID
   int ArrayId = -1;
   std::string ArrayName;
+  vtkImageData* MaskInput = nullptr;
+  int MaskType = 1; // label map, as vtkGPUVolumeRayCastMapper
+  float MaskBlendFactor = 1.0f;
   vtkVolumeProperty* VolumeProperty = nullptr;
   vtkRenderer* Renderer = nullptr;
   vtkCamera* Camera = nullptr;
