@@ -4,9 +4,9 @@
  *
  * What avs_classify.glsl needs beside the volume texture, for the ray caster and the
  * averaged-extinction pass alike: its compile-time choices (Layout::Defines), the table rows
- * (components' colour and opacity, gradient opacities, label functions) in one RGBA16F 2D
- * texture, the mask (nearest) and, for 4 components with NaN voxels, the validity in a texture
- * of its own; and their uniforms. The CPU twin is Rendering/Core/Classifier.cxx.
+ * (components' colour and opacity, gradient opacities, label functions) as the layers of one
+ * RGBA16F 1D array texture, the mask (nearest) and, for 4 components with NaN voxels, the validity
+ * in a texture of its own; and their uniforms. The CPU twin is Rendering/Core/Classifier.cxx.
  */
 #ifndef vtkAVSClassification_h
 #define vtkAVSClassification_h
@@ -66,11 +66,15 @@ public:
   bool IsUploaded() const { return this->Transfer != nullptr; }
 
 private:
+  void ReleaseTransfer();
   vtkOpenGLRenderWindow* Window = nullptr;
+  unsigned int TransferHandle = 0; ///< the 1D array texture's GL name (ours to delete)
   vtkSmartPointer<vtkTextureObject> Transfer, Mask, Validity;
   Layout Current;
   float TransferSize[2] = { 1, 1 };
-  float RowMap[16] = {};
+  float RowMap[16] = {};  // value -> x texture coordinate per row
+  float RowY[8] = {};     // y texture coordinate per row
+  float ColorMap[6] = {}; // dependent RGBA: value -> [0, 1]
   float UnitDistance[4] = { 1, 1, 1, 1 };
   float Weight[4] = { 1, 1, 1, 1 };
   float GradientScale[3] = { 0.5f, 0.5f, 0.5f };

@@ -12,17 +12,21 @@
 // The volume texture (AVS_VOLUME_TEXTURE, default u_scalars) holds the components, multiplied
 // by the validity. The tables are rows of u_transfer (RGBA, u_transferSize.x columns): row c
 // is component c's colour and opacity, row AVS_COMPONENTS + c its gradient opacity (in .a),
-// row 2 AVS_COMPONENTS + L - 1 label L's colour and opacity; u_rowMap[row] maps a value to
-// [0, 1] over the row's range (labels use row 0's). Shared by the ray caster and the
+// row 2 AVS_COMPONENTS + L - 1 label L's colour and opacity; u_rowMap[row] maps a value to the
+// texture's x coordinate over the row's range, with texel centres on the table's nodes (labels
+// use row 0's; the texture's clamp to the edge clamps beyond the range), and u_rowY[row] is its
+// layer. Shared by the ray caster and the
 // averaged-extinction pass, which insert it at //AVS::Classify::Dec. Classify(raw, coordinate)
 // takes the volume texel `raw` fetched at texture coordinate `coordinate`.
 #ifndef AVS_VOLUME_TEXTURE
 #define AVS_VOLUME_TEXTURE u_scalars
 #endif
 uniform sampler3D AVS_VOLUME_TEXTURE;
-uniform sampler2D u_transfer;
+uniform sampler1DArray u_transfer; // one layer per row
 uniform vec2 u_transferSize; // columns, rows
-uniform vec2 u_rowMap[8];    // value -> [0, 1] over the row's range: value * x + y
+uniform vec2 u_rowMap[8];    // value -> x texture coordinate: value * x + y
+uniform float u_rowY[8];     // the row's layer
+uniform vec2 u_colorMap[3];  // dependent RGBA: component -> colour in [0, 1] (before clamping)
 uniform float u_unitDistance[4];
 uniform float u_weight[4];
 uniform vec3 u_gradientScale; // mean spacing / (2 spacing) per index axis
@@ -36,18 +40,10 @@ uniform float u_maskBlend;
 uniform float u_labels; // labels with their own row
 #endif
 
-// Row `row` of the tables at normalised coordinate c in [0, 1] (texel centres on the nodes).
-vec4 TableRow(float c, float row)
-{
-  vec2 at = vec2(clamp(c, 0.0, 1.0) * ((u_transferSize.x - 1.0) / u_transferSize.x) +
-      0.5 / u_transferSize.x,
-    (row + 0.5) / u_transferSize.y);
-  return textureLod(u_transfer, at, 0.0);
-}
-
+// Row `row` (a compile-time constant where it is called) of the tables at `value`.
 vec4 Row(float value, int row)
 {
-  return TableRow(value * u_rowMap[row].x + u_rowMap[row].y, float(row));
+  return textureLod(u_transfer, vec2(value * u_rowMap[row].x + u_rowMap[row].y, u_rowY[row]), 0.0);
 }
 
 float Extinction(float alpha, float unitDistance)
@@ -132,8 +128,8 @@ vec4 Classify(vec4 raw, vec3 coordinate)
   color = Row(s.x, 0).rgb;
   sigma = ComponentExtinction(1, Row(s.y, 1).a, gradient);
 #elif AVS_MODE == 2
-  color = clamp(s.rgb * vec3(u_rowMap[0].x, u_rowMap[1].x, u_rowMap[2].x) +
-      vec3(u_rowMap[0].y, u_rowMap[1].y, u_rowMap[2].y),
+  color = clamp(s.rgb * vec3(u_colorMap[0].x, u_colorMap[1].x, u_colorMap[2].x) +
+      vec3(u_colorMap[0].y, u_colorMap[1].y, u_colorMap[2].y),
     0.0,
     1.0);
   sigma = ComponentExtinction(3, Row(s.w, 3).a, gradient);
@@ -161,7 +157,7 @@ vec4 Classify(vec4 raw, vec3 coordinate)
   if (label >= 1.0 && u_maskBlend > 0.0)
   {
     float row = label <= u_labels ? 2.0 * float(AVS_COMPONENTS) + label - 1.0 : 0.0;
-    vec4 l = TableRow(s.x * u_rowMap[0].x + u_rowMap[0].y, row);
+    vec4 l = textureLod(u_transfer, vec2(s.x * u_rowMap[0].x + u_rowMap[0].y, row), 0.0);
     float sigmaL = Extinction(l.a, u_unitDistance[0]);
     float mixed = (1.0 - u_maskBlend) * sigma + u_maskBlend * sigmaL;
     color = mixed > 0.0
