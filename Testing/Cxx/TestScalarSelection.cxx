@@ -124,6 +124,24 @@ int main(int argc, char* argv[])
     std::cout << "\n";
     ours[tag] = picture;
   }
+  // SetArrayAccessMode alone switches between the selected name ("shell") and index (0, "slab").
+  {
+    vtkNew<vtkEmissionAbsorptionVolumeMapper> ea;
+    ea->SetInputData(points);
+    ea->SetSampleDistance(step);
+    ea->UseJitteringOff();
+    ea->SetScalarModeToUsePointFieldData();
+    ea->SelectScalarArray("shell");
+    ea->SelectScalarArray(0);
+    const double byId = Psnr(RenderVolume(window, renderer, ea, property), ours["point_default"]);
+    ea->SetArrayAccessMode(VTK_GET_ARRAY_BY_NAME);
+    const double byName =
+      Psnr(RenderVolume(window, renderer, ea, property), ours["point_field_name"]);
+    std::cout << "ArrayAccessMode by id (slab): " << byId << " dB, by name (shell): " << byName
+              << " dB\n";
+    AVS_CHECK(byId > 80.0);
+    AVS_CHECK(byName > 80.0);
+  }
   // Cell data is not point data: the cell picture of the shell differs from the point picture
   // of the same function (cells are sampled half a cell apart, and the box is the same).
   std::cout << "cell shell against point shell: "
