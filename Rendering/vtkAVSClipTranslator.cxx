@@ -85,7 +85,10 @@ bool vtkAVSClipTranslator::ToClipRegion(vtkPlaneCollection* planes,
         return false;
       }
       // Data coordinate x = origin + (extent start + index) spacing along axis a.
-      region.CroppingPlanes[i] = (croppingPlanes[i] - origin[a]) / spacing[a] - extent[2 * a];
+      // The grid's index 0 is the first point, or the first cell's centre for cell data
+      // (half a voxel on).
+      region.CroppingPlanes[i] = (croppingPlanes[i] - origin[a]) / spacing[a] - extent[2 * a] -
+        (grid.Border > 0.0 ? 0.5 : 0.0);
     }
     region.Cropping = true;
     region.CroppingRegionFlags = croppingRegionFlags;

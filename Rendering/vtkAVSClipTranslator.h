@@ -25,7 +25,7 @@ class vtkPlaneCollection;
 class vtkAVSClipTranslator
 {
 public:
-  /// The region of `image` (converted to `grid` by vtkAVSSceneTranslator::ToGrid) placed in
+  /// The region of `image` (converted to `grid` by vtkAVSDataTranslator::ToVolume) placed in
   /// the world by `dataToWorld` (the vtkVolume's matrix; nullptr: the identity). Returns false
   /// with a message for more than avs::ClipRegion::MaximumNumberOfPlanes planes, a plane with a
   /// zero or non-finite normal or a non-finite origin, or non-finite cropping planes.

@@ -3,11 +3,14 @@
 #include "AmbientOcclusion.h"
 #include "AveragedExtinction.h"
 #include "ImageSampleDistance.h"
+#include "Classifier.h"
 #include "LightVolume.h"
 #include "ReferenceRenderer.h"
 #include "ScatteringParameters.h"
 #include "ScatteringTable.h"
 #include "vtkAVSClipTranslator.h"
+#include "vtkAVSDataTranslator.h"
+#include "vtkAVSPropertyTranslator.h"
 #include "vtkAVSRayCaster.h"
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSSceneTranslator.h"
@@ -36,27 +39,34 @@ struct vtkAVSVolumeMapper::Internals
 {
   vtkAVSRayCaster RayCaster;
 
-  // What the uploaded data came from.
+  // What the uploaded data came from: the image, the selected array and the selection.
   vtkImageData* DataObject = nullptr;
   vtkMTimeType DataTime = 0;
-  avs::Grid Scalars;
+  vtkDataArray* ArrayObject = nullptr;
+  vtkMTimeType ArrayTime = 0;
+  vtkAVSDataTranslator::Selection Selection;
+  /// The volume as the core classifies it: the grids from the data, the functions from the
+  /// property (Scalars empty: nothing converted).
+  avs::VolumeScene Scene;
+  std::vector<std::array<double, 2>> Ranges; ///< finite range of each component
+  vtkImageData* MaskObject = nullptr;        ///< what Scene.Medium.MaskValues came from
+  vtkMTimeType MaskTime = 0;
+  int ScalarType = 0;
   bool ScalarsUploaded = false;
 
   vtkVolumeProperty* PropertyObject = nullptr;
   vtkMTimeType PropertyTime = 0;
-  double UnitDistance = 1.0;
-  avs::TransferFunction Transfer;
+  vtkMTimeType ClassificationTime = 0; ///< this mapper's MTime when the property was converted
   bool TransferUploaded = false;
 
   // Versions of the derived volumes: a change of a version invalidates what uses it.
   int DataVersion = 0;
   int TransferVersion = 0;
   int ExtinctionKey[2] = { -1, -1 }; // data, opacity versions of Extinction
-  // What sigma_t depends on, and its version (a colour change leaves it).
+  // What sigma_t depends on besides the data (avs::ExtinctionKey), and its version (a colour
+  // change leaves it).
   int OpacityVersion = 0;
-  std::vector<float> ExtinctionOpacity;
-  double ExtinctionRange[2] = { 0.0, 0.0 };
-  double ExtinctionUnitDistance = -1.0;
+  std::vector<double> ExtinctionInputs;
   avs::Grid Extinction;
 
   // Ambient scattering.
@@ -92,10 +102,6 @@ struct vtkAVSVolumeMapper::Internals
   int OcclusionDirections = -1;
   bool OcclusionUploaded = false;
 
-  // Clipping planes and cropping in the index frame; a change bumps OpacityVersion, since
-  // sigma_t depends on it (everything built from sigma_t is rebuilt).
-  avs::ClipRegion Clip;
-
   vtkNew<vtkMatrix4x4> WorldToIndex;
   avs::ScatteringParameters Parameters;
   std::vector<avs::Light> WorldLights;
@@ -122,6 +128,8 @@ avs::Vec3 Transform(vtkMatrix4x4* m, const avs::Vec3& p)
 }
 } // namespace
 
+vtkCxxSetObjectMacro(vtkAVSVolumeMapper, MaskInput, vtkImageData);
+
 vtkAVSVolumeMapper::vtkAVSVolumeMapper()
   : Internal(new Internals)
 {
@@ -129,6 +137,7 @@ vtkAVSVolumeMapper::vtkAVSVolumeMapper()
 
 vtkAVSVolumeMapper::~vtkAVSVolumeMapper()
 {
+  this->SetMaskInput(nullptr);
   this->Internal->RayCaster.ReleaseGraphicsResources(this->Internal->RayCaster.GetWindow());
 }
 
@@ -177,22 +186,80 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     vtkErrorMacro("Cannot render: no input image data.");
     return false;
   }
-  if (input != in.DataObject || input->GetMTime() != in.DataTime || in.Scalars.Values.empty())
+  // The array to draw, as vtkGPUVolumeRayCastMapper selects it.
+  vtkAVSDataTranslator::Selection selection;
+  selection.ScalarMode = this->ScalarMode;
+  selection.ArrayAccessMode = this->ArrayAccessMode;
+  selection.ArrayId = this->ArrayId;
+  selection.ArrayName = this->ArrayName ? this->ArrayName : "";
+  bool cellData = false;
+  vtkDataArray* array = vtkAVSDataTranslator::Select(input, selection, cellData, error);
+  auto forget = [&in]()
   {
-    avs::Grid grid;
-    if (!vtkAVSSceneTranslator::ToGrid(input, grid, error))
+    in.DataObject = nullptr;
+    in.Scene = avs::VolumeScene();
+  };
+  if (!array)
+  {
+    forget();
+    vtkErrorMacro("Cannot render: " << error);
+    return false;
+  }
+  const bool sameSelection = selection.ScalarMode == in.Selection.ScalarMode &&
+    selection.ArrayAccessMode == in.Selection.ArrayAccessMode &&
+    selection.ArrayId == in.Selection.ArrayId && selection.ArrayName == in.Selection.ArrayName;
+  if (input != in.DataObject || input->GetMTime() != in.DataTime || array != in.ArrayObject ||
+    array->GetMTime() != in.ArrayTime || !sameSelection || in.Scene.Scalars.Values.empty())
+  {
+    vtkAVSDataTranslator::Volume data;
+    std::string warning;
+    if (!vtkAVSDataTranslator::ToVolume(input, selection, data, error, warning))
     {
-      in.DataObject = nullptr;
-      in.Scalars = avs::Grid();
+      forget();
       vtkErrorMacro("Cannot render: " << error);
       return false;
     }
-    in.Scalars = std::move(grid);
+    if (!warning.empty())
+    {
+      vtkWarningMacro(<< warning << ".");
+    }
+    in.Scene = avs::VolumeScene();
+    in.Scene.Scalars = std::move(data.Components[0]);
+    for (std::size_t c = 1; c < data.Components.size(); ++c)
+    {
+      in.Scene.Medium.Components.emplace_back();
+      in.Scene.Medium.Components.back().Values = std::move(data.Components[c]);
+    }
+    in.Scene.Medium.Validity = std::move(data.Validity);
+    in.Ranges = data.Ranges;
+    in.ScalarType = data.ScalarType;
     in.DataObject = input;
     in.DataTime = input->GetMTime();
+    in.ArrayObject = array;
+    in.ArrayTime = array->GetMTime();
+    in.Selection = selection;
     in.ScalarsUploaded = false;
     ++in.DataVersion;
     in.PropertyObject = nullptr; // the scalar range may have changed
+  }
+  // The mask, on the volume's samples.
+  vtkImageData* mask = this->MaskInput;
+  if (mask != in.MaskObject || (mask && mask->GetMTime() != in.MaskTime) ||
+    (mask && in.Scene.Medium.MaskValues.Values.empty()))
+  {
+    in.Scene.Medium.MaskValues = avs::Grid();
+    in.MaskObject = nullptr;
+    if (mask &&
+      !vtkAVSDataTranslator::ToMask(
+        mask, in.Scene.Scalars.Geometry, in.Scene.Medium.MaskValues, error))
+    {
+      vtkErrorMacro("Cannot render: " << error);
+      return false;
+    }
+    in.MaskObject = mask;
+    in.MaskTime = mask ? mask->GetMTime() : 0;
+    ++in.DataVersion; // sigma_t depends on it
+    in.PropertyObject = nullptr;
   }
   vtkVolumeProperty* property = volume->GetProperty();
   if (!property)
@@ -200,29 +267,42 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     vtkErrorMacro("Cannot render: the volume has no property.");
     return false;
   }
-  if (property != in.PropertyObject || property->GetMTime() != in.PropertyTime)
+  if (property != in.PropertyObject || property->GetMTime() != in.PropertyTime ||
+    this->GetMTime() != in.ClassificationTime)
   {
-    double range[2];
-    input->GetPointData()->GetScalars()->GetRange(range, 0);
-    if (!vtkAVSSceneTranslator::ToTransferFunction(
-          property, range[0], range[1], in.Transfer, in.UnitDistance, error))
+    std::string warning;
+    avs::MediumOptions& medium = in.Scene.Medium;
+    medium.Mask = medium.MaskValues.Values.empty()
+      ? avs::MaskType::None
+      : (this->MaskType == BinaryMaskType ? avs::MaskType::Binary : avs::MaskType::LabelMap);
+    medium.MaskBlendFactor = this->MaskBlendFactor;
+    if (!vtkAVSPropertyTranslator::ToMedium(property,
+          in.Ranges,
+          in.ScalarType,
+          medium.Mask == avs::MaskType::LabelMap,
+          in.Scene,
+          error,
+          warning))
     {
+      in.PropertyObject = nullptr;
       vtkErrorMacro("Cannot render: " << error);
       return false;
     }
+    if (!warning.empty())
+    {
+      vtkWarningMacro(<< warning << ".");
+    }
+    this->WarnAboutShading(property);
     in.PropertyObject = property;
     in.PropertyTime = property->GetMTime();
+    in.ClassificationTime = this->GetMTime();
     in.TransferUploaded = false;
     ++in.TransferVersion;
     // Extinction depends on the opacity alone: a change of colour alone rebuilds nothing.
-    if (in.Transfer.Opacity != in.ExtinctionOpacity ||
-      in.Transfer.Minimum != in.ExtinctionRange[0] ||
-      in.Transfer.Maximum != in.ExtinctionRange[1] || in.UnitDistance != in.ExtinctionUnitDistance)
+    std::vector<double> inputs = avs::ExtinctionKey(in.Scene);
+    if (inputs != in.ExtinctionInputs)
     {
-      in.ExtinctionOpacity = in.Transfer.Opacity;
-      in.ExtinctionRange[0] = in.Transfer.Minimum;
-      in.ExtinctionRange[1] = in.Transfer.Maximum;
-      in.ExtinctionUnitDistance = in.UnitDistance;
+      in.ExtinctionInputs = std::move(inputs);
       ++in.OpacityVersion;
     }
   }
@@ -240,11 +320,11 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   }
   p.TerminationTransmittance = this->TerminationTransmittance;
   this->FillParameters(p);
-  in.Parameters = p.Resolve(in.Scalars.Geometry);
+  in.Parameters = p.Resolve(in.Scene.Scalars.Geometry);
   const avs::ScatteringParameters& rp = in.Parameters;
 
   // Transforms: data -> world is the volume's matrix; index -> data is the grid's placement.
-  const avs::GridGeometry& g = in.Scalars.Geometry;
+  const avs::GridGeometry& g = in.Scene.Scalars.Geometry;
   vtkNew<vtkMatrix4x4> indexToData;
   for (int r = 0; r < 3; ++r)
   {
@@ -277,9 +357,11 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     vtkErrorMacro("Cannot render: " << error);
     return false;
   }
-  if (clip != in.Clip)
+  // The clip region is in the scene (its index frame); a change bumps OpacityVersion, since
+  // sigma_t depends on it (everything built from sigma_t is rebuilt).
+  if (clip != in.Scene.Clip)
   {
-    in.Clip = clip;
+    in.Scene.Clip = clip;
     ++in.OpacityVersion;
   }
 
@@ -297,7 +379,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   // Uploads of what changed.
   if (!in.ScalarsUploaded)
   {
-    if (!in.RayCaster.UploadScalars(in.Scalars, error))
+    if (!in.RayCaster.UploadScalars(in.Scene, error))
     {
       vtkErrorMacro("Cannot render: " << error);
       return false;
@@ -307,7 +389,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   }
   if (!in.TransferUploaded)
   {
-    if (!in.RayCaster.UploadTransferFunction(in.Transfer, error))
+    if (!in.RayCaster.UploadClassification(in.Scene, error))
     {
       vtkErrorMacro("Cannot render: " << error);
       return false;
@@ -320,7 +402,6 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   {
     return true;
   }
-  avs::VolumeScene scene;
   // Ambient scattering with compute shaders needs no extinction grid on the CPU. (The GPU
   // light-volume pass takes tables of up to MaximumTauNodes tau nodes; larger user tables are
   // marched on the CPU.)
@@ -335,12 +416,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   if (!gpuScattering &&
     (in.ExtinctionKey[0] != in.DataVersion || in.ExtinctionKey[1] != in.OpacityVersion))
   {
-    scene.Transfer = in.Transfer;
-    scene.UnitDistance = in.UnitDistance;
-    scene.Scalars.Geometry = g;
-    scene.Scalars.Values = in.Scalars.Values;
-    scene.Clip = in.Clip;
-    in.Extinction = avs::ExtinctionGrid(scene);
+    in.Extinction = avs::ExtinctionGrid(in.Scene);
     in.ExtinctionKey[0] = in.DataVersion;
     in.ExtinctionKey[1] = in.OpacityVersion;
   }
@@ -420,9 +496,8 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     {
       if (!in.RayCaster.ComputeAveragedExtinction(g.Dimensions,
             lightGrid.Dimensions,
-            in.UnitDistance,
             avs::AveragingHalfWidths(rp.AmbientRadius, g.Spacing),
-            in.Clip,
+            in.Scene.Clip,
             error))
       {
         vtkErrorMacro("Cannot render: " << error);
@@ -433,7 +508,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     {
       in.Averaged = avs::AverageExtinctionOn(in.Extinction, rp.AmbientRadius, lightGrid);
       if (!in.RayCaster.UploadScalarsAveraged(
-            in.Scalars, avs::ResampleTrilinear(in.Averaged, g), error))
+            in.Scene, avs::ResampleTrilinear(in.Averaged, g), error))
       {
         vtkErrorMacro("Cannot render: " << error);
         return false;
@@ -520,6 +595,34 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   return true;
 }
 
+void vtkAVSVolumeMapper::WarnAboutShading(vtkVolumeProperty* property)
+{
+  // Phong shading (ShadeOn with the ambient, diffuse, specular coefficients and the specular
+  // power) has no meaning for these physically based mappers: EA and AO are never lit by the
+  // property's coefficients, ambient scattering is always lit by its scattering model.
+  std::string warning;
+  if (property->GetShade())
+  {
+    if (this->GetEffect() != 2)
+    {
+      warning = "ShadeOn has no effect on " + std::string(this->GetClassName()) +
+        ": it does not shade (vtkAmbientScatteringVolumeMapper lights the volume by scattering)";
+    }
+    else if (property->GetAmbient() != 0.1 || property->GetDiffuse() != 0.7 ||
+      property->GetSpecular() != 0.2 || property->GetSpecularPower() != 10.0)
+    {
+      warning = "the property's ambient, diffuse and specular coefficients and specular power are "
+                "not used: ambient scattering lights the volume through its scattering model "
+                "(Albedo, Anisotropy, the renderer's lights)";
+    }
+  }
+  if (!warning.empty() && warning != this->ShadingWarning)
+  {
+    vtkWarningMacro(<< warning << ".");
+  }
+  this->ShadingWarning = warning;
+}
+
 void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 {
   using Clock = std::chrono::steady_clock;
@@ -591,8 +694,17 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     this->ReleaseGraphicsResources(window);
     return;
   }
-  blend.ScalarRange[0] = in.Transfer.Minimum;
-  blend.ScalarRange[1] = in.Transfer.Maximum;
+  if (!lit && blend.Mode != vtkVolumeMapper::COMPOSITE_BLEND &&
+    in.Scene.Medium.NumberOfComponents() > 1)
+  {
+    vtkErrorMacro("Cannot render: the "
+      << vtkAVSShaderOptions::BlendModeName(this->BlendMode)
+      << " blend mode takes one-component data; this volume has "
+      << in.Scene.Medium.NumberOfComponents() << " components (use the composite blend mode)");
+    return;
+  }
+  blend.ScalarRange[0] = in.Scene.Transfer.Minimum;
+  blend.ScalarRange[1] = in.Scene.Transfer.Maximum;
   blend.AverageRange[0] = std::min(this->AverageIPScalarRange[0], this->AverageIPScalarRange[1]);
   blend.AverageRange[1] = std::max(this->AverageIPScalarRange[0], this->AverageIPScalarRange[1]);
   int width = 0, height = 0, x = 0, y = 0;
@@ -616,13 +728,13 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
                               : avs::RenderMode::AmbientScattering);
   frame.Parameters = in.Parameters;
   frame.WorldToIndex = in.WorldToIndex;
-  frame.Dimensions = in.Scalars.Geometry.Dimensions;
-  frame.Spacing = in.Scalars.Geometry.Spacing;
-  frame.Clip = in.Clip;
+  frame.Dimensions = in.Scene.Scalars.Geometry.Dimensions;
+  frame.Spacing = in.Scene.Scalars.Geometry.Spacing;
+  frame.Border = in.Scene.Scalars.Geometry.Border;
+  frame.Clip = in.Scene.Clip;
   frame.Blend = blend;
   frame.LightVolumeDimensions = in.LightGridDimensions;
   frame.OcclusionDimensions = in.OcclusionDimensions;
-  frame.UnitDistance = in.UnitDistance;
   frame.Lights = in.WorldLights;
   frame.Jitter = this->UseJittering != 0;
   frame.Prop = volume;
@@ -661,6 +773,10 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "MaskInput: " << this->MaskInput << "\n";
+  os << indent << "MaskType: " << (this->MaskType == BinaryMaskType ? "Binary" : "LabelMap")
+     << "\n";
+  os << indent << "MaskBlendFactor: " << this->MaskBlendFactor << "\n";
   os << indent << "SampleDistance: " << this->SampleDistance
      << (this->SampleDistance > 0 ? "" : " (automatic)") << "\n";
   os << indent << "LockSampleDistanceToInputSpacing: "

@@ -3,9 +3,11 @@
  * @brief   the GPU ray-casting machinery shared by the module's three volume mappers
  *
  * Abstract base of vtkEmissionAbsorptionVolumeMapper, vtkAmbientOcclusionVolumeMapper and
- * vtkAmbientScatteringVolumeMapper. It renders vtkImageData (single-component point scalars of
- * any type; origin, spacing, extent and direction matrix honoured; the vtkVolume's transform
- * applied) with the vtkVolumeProperty's colour and scalar-opacity functions and unit distance,
+ * vtkAmbientScatteringVolumeMapper. It renders vtkImageData (point or cell scalars of any type,
+ * 1-4 components, selected as vtkGPUVolumeRayCastMapper selects them with ScalarMode and
+ * SelectScalarArray; origin, spacing, extent and direction matrix honoured; the vtkVolume's
+ * transform applied) with the vtkVolumeProperty's colour and scalar-opacity functions and unit
+ * distances, component modes and weights, gradient opacity and interpolation type,
  * by a full-screen GPU ray caster that clips rays to the volume box and to the depth of opaque
  * geometry drawn before, and composites its premultiplied result over the framebuffer as VTK's
  * own mappers do. The camera may be inside the volume; perspective and parallel projections,
@@ -35,13 +37,19 @@
  * through a cut. Moving a plane, or the volume against the planes, rebuilds what depends on the
  * extinction (the counters show it). Blend modes: vtkEmissionAbsorptionVolumeMapper renders
  * composite, maximum, minimum and average intensity (with AverageIPScalarRange), additive and
- * isosurface as vtkGPUVolumeRayCastMapper does unshaded; the ambient-occlusion and
- * ambient-scattering mappers render composite only, and any other mode (slice for all three)
- * is a vtkErrorMacro naming the mode, with nothing drawn.
+ * isosurface as vtkGPUVolumeRayCastMapper does unshaded, on one-component data (the first
+ * component's transfer functions; gradient opacity and masks apply to composite only); the
+ * ambient-occlusion and ambient-scattering mappers render composite only, and any other mode
+ * (slice for all three) is a vtkErrorMacro naming the mode, with nothing drawn.
  *
- * Bad input — no or empty image, no point scalars, more than one component, NaN or infinite
- * values, bad spacing, a volume too large for the GPU, more than 8 clipping planes or one with
- * a zero normal — gives a vtkErrorMacro and draws nothing.
+ * NaN voxels are empty space and infinities are clamped to the finite range, with one warning
+ * that counts them. The property's shading flags (ShadeOn, ambient, diffuse, specular) have no
+ * meaning for these physically based mappers: a warning says so where they would mislead.
+ *
+ * Bad input — no or empty image, no such array, more than four components, three dependent
+ * components, bad spacing, a volume too large for the GPU, more than 8 clipping planes or one
+ * with a zero normal, a blend mode other than composite on data of several components — gives
+ * a vtkErrorMacro and draws nothing.
  */
 #ifndef vtkAVSVolumeMapper_h
 #define vtkAVSVolumeMapper_h
@@ -50,12 +58,16 @@
 #include "vtkVolumeMapper.h"
 
 #include <memory> // for std::unique_ptr
+#include <string> // for std::string
 
 namespace avs
 {
 struct ScatteringParameters;
 class ScatteringTable;
 }
+
+class vtkImageData;
+class vtkVolumeProperty;
 
 class VTKRENDERINGAMBIENTSCATTERING_EXPORT vtkAVSVolumeMapper : public vtkVolumeMapper
 {
@@ -168,6 +180,34 @@ public:
 
   ///@{
   /**
+   * A mask, as vtkGPUVolumeRayCastMapper's (VTK 9.1): image data with as many samples as the
+   * volume (points for point data, cells for cell data; read by sample, its own origin and
+   * spacing unused), its point (else cell) scalars, first component. MaskType
+   * BinaryMaskType: samples whose nearest mask value is <= 0 are empty space (MaskBlendFactor is
+   * not used). LabelMapMaskType (default, as in VTK): label L = the nearest mask value rounded;
+   * samples of label L >= 1 take the property's label functions (vtkVolumeProperty::
+   * SetLabelColor, SetLabelScalarOpacity; labels without them take component 0's), mixed with
+   * the unlabelled medium by MaskBlendFactor (default 1: the label's alone; 0: no labels; in
+   * between, sigma_t = (1 - b) sigma + b sigma_label and the colour their extinction-weighted
+   * mean); label maps need single-component scalars. Default: no mask.
+   */
+  void SetMaskInput(vtkImageData* mask);
+  vtkGetObjectMacro(MaskInput, vtkImageData);
+  enum
+  {
+    BinaryMaskType = 0,
+    LabelMapMaskType
+  };
+  vtkSetClampMacro(MaskType, int, BinaryMaskType, LabelMapMaskType);
+  vtkGetMacro(MaskType, int);
+  void SetMaskTypeToBinary() { this->SetMaskType(BinaryMaskType); }
+  void SetMaskTypeToLabelMap() { this->SetMaskType(LabelMapMaskType); }
+  vtkSetClampMacro(MaskBlendFactor, float, 0.0f, 1.0f);
+  vtkGetMacro(MaskBlendFactor, float);
+  ///@}
+
+  ///@{
+  /**
    * Whether the last light volumes (ambient scattering) or occlusion volume (ambient occlusion)
    * were computed on the GPU.
    */
@@ -226,6 +266,9 @@ protected:
   float MaximumImageSampleDistance = 10.0f;
   float LastImageSampleDistance = 1.0f;
   vtkTypeBool LockSampleDistanceToInputSpacing = 0;
+  vtkImageData* MaskInput = nullptr;
+  int MaskType = LabelMapMaskType;
+  float MaskBlendFactor = 1.0f;
   vtkTypeBool UseJittering = 1;
   double TerminationTransmittance = 1.0 / 255.0;
   vtkTypeBool PrecomputeOnGPU = 1;
@@ -248,6 +291,9 @@ private:
   /// Converts, checks, uploads and precomputes what changed; an interactive frame keeps the light
   /// volumes of camera-following lights.
   bool Prepare(vtkRenderer* renderer, vtkVolume* volume, bool interactive);
+  // One warning when the property's shading flags ask for what this mapper does not do.
+  void WarnAboutShading(vtkVolumeProperty* property);
+  std::string ShadingWarning;
 };
 
 #endif

@@ -3,6 +3,8 @@
 #include "PathTracer.h"
 #include "ReferenceRenderer.h"
 #include "vtkAVSClipTranslator.h"
+#include "vtkAVSDataTranslator.h"
+#include "vtkAVSPropertyTranslator.h"
 #include "vtkAVSSceneTranslator.h"
 #include "vtkAmbientScatteringTable.h"
 
@@ -33,6 +35,7 @@ vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, Renderer, vtkRenderer);
 vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, Camera, vtkCamera);
 vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, ScatteringTable, vtkAmbientScatteringTable);
 vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, ClippingPlanes, vtkPlaneCollection);
+vtkCxxSetObjectMacro(vtkVolumeReferenceRenderer, MaskInput, vtkImageData);
 
 vtkVolumeReferenceRenderer::vtkVolumeReferenceRenderer()
 {
@@ -47,6 +50,29 @@ vtkVolumeReferenceRenderer::~vtkVolumeReferenceRenderer()
   this->SetCamera(nullptr);
   this->SetScatteringTable(nullptr);
   this->SetClippingPlanes(nullptr);
+  this->SetMaskInput(nullptr);
+}
+
+void vtkVolumeReferenceRenderer::SelectScalarArray(int arrayNum)
+{
+  if (this->ArrayId == arrayNum && this->ArrayAccessMode == 0)
+  {
+    return;
+  }
+  this->ArrayId = arrayNum;
+  this->ArrayAccessMode = 0; // VTK_GET_ARRAY_BY_ID
+  this->Modified();
+}
+
+void vtkVolumeReferenceRenderer::SelectScalarArray(const char* arrayName)
+{
+  if (!arrayName || (this->ArrayName == arrayName && this->ArrayAccessMode == 1))
+  {
+    return;
+  }
+  this->ArrayName = arrayName;
+  this->ArrayAccessMode = 1; // VTK_GET_ARRAY_BY_NAME
+  this->Modified();
 }
 
 const char* vtkVolumeReferenceRenderer::GetRenderModeAsString()
@@ -88,6 +114,10 @@ vtkMTimeType vtkVolumeReferenceRenderer::GetMTime()
     {
       t = std::max(t, plane->GetMTime());
     }
+  }
+  if (this->MaskInput)
+  {
+    t = std::max(t, this->MaskInput->GetMTime());
   }
   if (this->Renderer)
   {
@@ -153,11 +183,39 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
   output->Initialize();
 
   avs::VolumeScene scene;
-  std::string error;
-  if (!vtkAVSSceneTranslator::ToGrid(input, scene.Scalars, error))
+  std::string error, warning;
+  vtkAVSDataTranslator::Selection selection;
+  selection.ScalarMode = this->ScalarMode;
+  selection.ArrayAccessMode = this->ArrayAccessMode;
+  selection.ArrayId = this->ArrayId;
+  selection.ArrayName = this->ArrayName;
+  vtkAVSDataTranslator::Volume data;
+  if (!vtkAVSDataTranslator::ToVolume(input, selection, data, error, warning))
   {
     vtkErrorMacro("Cannot render: " << error);
     return 1;
+  }
+  if (!warning.empty())
+  {
+    vtkWarningMacro(<< warning << ".");
+  }
+  scene.Scalars = std::move(data.Components[0]);
+  for (std::size_t c = 1; c < data.Components.size(); ++c)
+  {
+    scene.Medium.Components.emplace_back();
+    scene.Medium.Components.back().Values = std::move(data.Components[c]);
+  }
+  scene.Medium.Validity = std::move(data.Validity);
+  if (this->MaskInput)
+  {
+    if (!vtkAVSDataTranslator::ToMask(
+          this->MaskInput, scene.Scalars.Geometry, scene.Medium.MaskValues, error))
+    {
+      vtkErrorMacro("Cannot render: " << error);
+      return 1;
+    }
+    scene.Medium.Mask = this->MaskType == 0 ? avs::MaskType::Binary : avs::MaskType::LabelMap;
+    scene.Medium.MaskBlendFactor = this->MaskBlendFactor;
   }
   if (!this->VolumeProperty)
   {
@@ -177,13 +235,20 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
     vtkErrorMacro("Cannot render: " << error);
     return 1;
   }
-  double range[2];
-  input->GetPointData()->GetScalars()->GetRange(range, 0);
-  if (!vtkAVSSceneTranslator::ToTransferFunction(
-        this->VolumeProperty, range[0], range[1], scene.Transfer, scene.UnitDistance, error))
+  if (!vtkAVSPropertyTranslator::ToMedium(this->VolumeProperty,
+        data.Ranges,
+        data.ScalarType,
+        scene.Medium.Mask == avs::MaskType::LabelMap,
+        scene,
+        error,
+        warning))
   {
     vtkErrorMacro("Cannot render: " << error);
     return 1;
+  }
+  if (!warning.empty())
+  {
+    vtkWarningMacro(<< warning << ".");
   }
   vtkCamera* camera =
     this->Camera ? this->Camera : (this->Renderer ? this->Renderer->GetActiveCamera() : nullptr);
@@ -326,6 +391,13 @@ void vtkVolumeReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RenderMode: " << this->GetRenderModeAsString() << "\n";
+  os << indent << "ScalarMode: " << this->ScalarMode << "\n";
+  os << indent << "ArrayAccessMode: " << (this->ArrayAccessMode ? "ByName" : "ById") << "\n";
+  os << indent << "ArrayId: " << this->ArrayId << "\n";
+  os << indent << "ArrayName: " << this->ArrayName << "\n";
+  os << indent << "MaskInput: " << this->MaskInput << "\n";
+  os << indent << "MaskType: " << (this->MaskType == 0 ? "Binary" : "LabelMap") << "\n";
+  os << indent << "MaskBlendFactor: " << this->MaskBlendFactor << "\n";
   os << indent << "VolumeProperty: " << this->VolumeProperty << "\n";
   os << indent << "Renderer: " << this->Renderer << "\n";
   os << indent << "Camera: " << this->Camera << "\n";

@@ -2,11 +2,11 @@
  * @class   vtkVolumeReferenceRenderer
  * @brief   renders image data with the CPU reference ray caster into an image
  *
- * An image algorithm: its input is the volume (vtkImageData with single-component point
- * scalars, any type), its output a picture of it as a renderer's camera and lights see it. It
- * runs the project's double-precision reference ray caster (ALGORITHM.md sections 2-7):
- * emission–absorption, volumetric ambient occlusion or ambient volume scattering; or it
- * path-traces the same scene without approximation (PATH_TRACING). The GPU mappers are measured
+ * An image algorithm: its input is the volume (vtkImageData with point or cell scalars of any
+ * type, the array selected as on the mappers), its output a picture of it as a renderer's camera
+ * and lights see it. It runs the project's double-precision reference ray caster (ALGORITHM.md
+ * sections 2-7): emission–absorption, volumetric ambient occlusion or ambient volume scattering; or
+ * it path-traces the same scene without approximation (PATH_TRACING). The GPU mappers are measured
  * against it; it is also the renderer of `./avs demo` where no GPU mapper
  * is wanted.
  *
@@ -15,10 +15,11 @@
  * and alpha = 1 - transmittance).
  *
  * Clipping planes and cropping (as a vtkVolumeMapper's) remove material for every purpose.
+ * NaN voxels are empty space, infinities are clamped (one warning counts them).
  *
- * Bad input (no or empty image, no scalars, more than one component, NaN or infinite values,
- * bad spacing, no volume property, a missing or corrupt scattering table, more than 8 or
- * degenerate clipping planes) gives a vtkErrorMacro
+ * Bad input (no or empty image, no such array, more than four components, three dependent
+ * components, bad spacing, no volume property, a missing or corrupt scattering table, more
+ * than 8 or degenerate clipping planes) gives a vtkErrorMacro
  * and an empty output. Progress events are fired during the precomputation and the rendering.
  */
 #ifndef vtkVolumeReferenceRenderer_h
@@ -28,6 +29,7 @@
 #include "vtkRenderingAmbientScatteringModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
+#include <string> // for std::string
 
 class vtkAmbientScatteringTable;
 class vtkImageData;
@@ -78,6 +80,46 @@ public:
    */
   void SetVolumeProperty(vtkVolumeProperty* property);
   vtkGetObjectMacro(VolumeProperty, vtkVolumeProperty);
+  ///@}
+
+  ///@{
+  /**
+   * Which array of the input to render, as vtkAbstractVolumeMapper selects it (the same calls as
+   * on the mappers): ScalarMode VTK_SCALAR_MODE_DEFAULT (default: point scalars, else cell
+   * scalars), _USE_POINT_DATA, _USE_CELL_DATA, _USE_POINT_FIELD_DATA or _USE_CELL_FIELD_DATA;
+   * the last two take the array chosen with SelectScalarArray (by index: ArrayAccessMode
+   * VTK_GET_ARRAY_BY_ID, default; by name: VTK_GET_ARRAY_BY_NAME). Cell data is rendered as
+   * VTK's mapper renders it: the cell values sit at the cell centres, and the volume spans the
+   * points.
+   */
+  vtkSetMacro(ScalarMode, int);
+  vtkGetMacro(ScalarMode, int);
+  void SetScalarModeToDefault() { this->SetScalarMode(0); }
+  void SetScalarModeToUsePointData() { this->SetScalarMode(1); }
+  void SetScalarModeToUseCellData() { this->SetScalarMode(2); }
+  void SetScalarModeToUsePointFieldData() { this->SetScalarMode(3); }
+  void SetScalarModeToUseCellFieldData() { this->SetScalarMode(4); }
+  vtkSetMacro(ArrayAccessMode, int);
+  vtkGetMacro(ArrayAccessMode, int);
+  void SelectScalarArray(int arrayNum);
+  void SelectScalarArray(const char* arrayName);
+  vtkGetMacro(ArrayId, int);
+  const char* GetArrayName() { return this->ArrayName.c_str(); }
+  ///@}
+
+  ///@{
+  /**
+   * A mask, as on the mappers (vtkAVSVolumeMapper::SetMaskInput): binary or label map
+   * (default, as in VTK), with MaskBlendFactor (default 1). Default: no mask.
+   */
+  void SetMaskInput(vtkImageData* mask);
+  vtkGetObjectMacro(MaskInput, vtkImageData);
+  vtkSetClampMacro(MaskType, int, 0, 1);
+  vtkGetMacro(MaskType, int);
+  void SetMaskTypeToBinary() { this->SetMaskType(0); }
+  void SetMaskTypeToLabelMap() { this->SetMaskType(1); }
+  vtkSetClampMacro(MaskBlendFactor, float, 0.0f, 1.0f);
+  vtkGetMacro(MaskBlendFactor, float);
   ///@}
 
   ///@{
@@ -286,6 +328,13 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int RenderMode = AMBIENT_SCATTERING;
+  int ScalarMode = 0;      // VTK_SCALAR_MODE_DEFAULT
+  int ArrayAccessMode = 0; // VTK_GET_ARRAY_BY_ID
+  int ArrayId = -1;
+  std::string ArrayName;
+  vtkImageData* MaskInput = nullptr;
+  int MaskType = 1; // label map, as vtkGPUVolumeRayCastMapper
+  float MaskBlendFactor = 1.0f;
   vtkVolumeProperty* VolumeProperty = nullptr;
   vtkRenderer* Renderer = nullptr;
   vtkCamera* Camera = nullptr;

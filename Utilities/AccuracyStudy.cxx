@@ -3,6 +3,8 @@
 #include "PathTracer.h"
 #include "ProceduralVolume.h"
 
+#include "vtkAVSDataTranslator.h"
+#include "vtkAVSPropertyTranslator.h"
 #include "vtkAVSSceneTranslator.h"
 #include "vtkAmbientOcclusionVolumeMapper.h"
 #include "vtkAmbientScatteringVolumeMapper.h"
@@ -255,10 +257,12 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
 
     // The path tracer (truth), twice with different seeds to measure its own noise.
     avs::VolumeScene core;
-    std::string error;
-    vtkAVSSceneTranslator::ToGrid(data, core.Scalars, error);
-    vtkAVSSceneTranslator::ToTransferFunction(
-      scene.Property, 0.0, 1.0, core.Transfer, core.UnitDistance, error);
+    std::string error, warning;
+    vtkAVSDataTranslator::Volume volume;
+    vtkAVSDataTranslator::ToVolume(data, {}, volume, error, warning);
+    core.Scalars = std::move(volume.Components.at(0));
+    vtkAVSPropertyTranslator::ToMedium(
+      scene.Property, { { 0.0, 1.0 } }, VTK_FLOAT, false, core, error, warning);
     core.Lights = vtkAVSSceneTranslator::ToLights(renderer, renderer->GetActiveCamera());
     avs::ScatteringParameters p;
     p.AmbientRadius = settings.AmbientRadius;

@@ -39,6 +39,7 @@ Vec3 GridGeometry::IndexToWorld(const Vec3& index) const
 GridGeometry GridGeometry::Resampled(const std::array<int, 3>& dims) const
 {
   GridGeometry g = *this;
+  g.Border = 0.0;
   for (int a = 0; a < 3; ++a)
   {
     g.Dimensions[a] = std::max(1, dims[a]);
@@ -65,21 +66,59 @@ GridGeometry GridGeometry::Capped(int maximum) const
   return this->Resampled(capped);
 }
 
+namespace
+{
+// The continuous index p clamped into the lattice, or false when p lies outside the box (the
+// lattice widened by `border`, with a tolerance for rounding at its faces).
+inline bool ClampIntoLattice(const Vec3& p, const std::array<int, 3>& n, double border, Vec3& c)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    const double hi = n[a] - 1;
+    if (!(p[a] >= -border - 1e-9 && p[a] <= hi + border + 1e-9))
+    {
+      return false;
+    }
+    c[a] = std::clamp(p[a], 0.0, hi);
+  }
+  return true;
+}
+} // namespace
+
 double Grid::SampleIndex(const Vec3& p, double outside) const
+{
+  Vec3 c;
+  if (!ClampIntoLattice(p, this->Geometry.Dimensions, this->Geometry.Border, c))
+  {
+    return outside;
+  }
+  return this->SampleClamped(c);
+}
+
+double Grid::NearestIndex(const Vec3& p, double outside) const
+{
+  Vec3 c;
+  const auto& n = this->Geometry.Dimensions;
+  if (!ClampIntoLattice(p, n, this->Geometry.Border, c))
+  {
+    return outside;
+  }
+  int i[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    i[a] = std::min(static_cast<int>(std::floor(c[a] + 0.5)), n[a] - 1);
+  }
+  return this->At(i[0], i[1], i[2]);
+}
+
+double Grid::SampleClamped(const Vec3& p) const
 {
   const auto& n = this->Geometry.Dimensions;
   double f[3];
   int i0[3];
   for (int a = 0; a < 3; ++a)
   {
-    const double c = p[a];
-    const double hi = n[a] - 1;
-    // Tolerate rounding at the faces of the box.
-    if (!(c >= -1e-9 && c <= hi + 1e-9))
-    {
-      return outside;
-    }
-    const double cc = std::clamp(c, 0.0, hi);
+    const double cc = std::clamp(p[a], 0.0, static_cast<double>(n[a] - 1));
     int i = static_cast<int>(std::floor(cc));
     if (i >= n[a] - 1)
     {
@@ -136,6 +175,12 @@ bool IntersectBox(const Vec3& extent, const Vec3& o, const Vec3& d, double& t0, 
     }
   }
   return true;
+}
+
+bool IntersectVolumeBox(const GridGeometry& g, const Vec3& o, const Vec3& d, double& t0, double& t1)
+{
+  const Vec3 lower = g.BoxLower();
+  return IntersectBox(g.BoxUpper() - lower, o - lower, d, t0, t1);
 }
 
 } // namespace avs

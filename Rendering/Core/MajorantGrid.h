@@ -3,11 +3,13 @@
 // trilinearly interpolated scalar, so inside a cell it takes values of the transfer function
 // between the smallest and the largest scalar at the cell's corner voxels; the majorant is the
 // largest sigma_t of the transfer function over that scalar interval (exact for the sampled,
-// linearly interpolated table). Delta and ratio tracking walk the cells with a DDA.
+// linearly interpolated table; Classifier::Bound, which also bounds several components, gradient
+// opacity, NaN voxels and masks). Delta and ratio tracking walk the cells with a DDA.
 #ifndef avs_MajorantGrid_h
 #define avs_MajorantGrid_h
 
 #include "ClipRegion.h"
+#include "Classifier.h"
 #include "Grid.h"
 #include "TransferFunction.h"
 
@@ -26,6 +28,13 @@ public:
   MajorantGrid(const Grid& scalars,
     const TransferFunction& tf,
     double unitDistance,
+    int cellSize,
+    const ClipRegion* clip = nullptr);
+  /// Majorants of what `classifier` classifies on the lattice `geometry` (components,
+  /// gradient opacity, NaN voxels and masks included: Classifier::Bound); cells wholly outside
+  /// `clip` (when given) get 0.
+  MajorantGrid(const Classifier& classifier,
+    const GridGeometry& geometry,
     int cellSize,
     const ClipRegion* clip = nullptr);
 

@@ -16,30 +16,23 @@ namespace avs
 VolumeTracker::VolumeTracker(const VolumeScene& scene, const MajorantGrid& majorants)
   : Scene(scene)
   , Majorants(majorants)
+  , Classify(scene)
 {
 }
 
 double VolumeTracker::Extinction(const Vec3& world, Vec3* color) const
 {
-  const double s = this->Scene.Scalars.SampleWorld(world, std::numeric_limits<double>::quiet_NaN());
-  if (!(s == s))
-  {
-    if (color)
-    {
-      *color = { 0, 0, 0 };
-    }
-    return 0.0;
-  }
+  const Classified c = this->Classify.AtWorld(world);
   if (color)
   {
-    *color = this->Scene.Transfer.ColorAt(s);
+    *color = c.Color;
   }
   if (this->Scene.Clip.Clips() &&
     !this->Scene.Clip.IsInside(this->Scene.Scalars.Geometry.WorldToIndex(world)))
   {
     return 0.0; // clipped or cropped away
   }
-  return OpacityToExtinction(this->Scene.Transfer.OpacityAt(s), this->Scene.UnitDistance);
+  return c.SigmaT;
 }
 
 // Walks the majorant cells along the ray inside the volume box, sampling tentative collisions
@@ -55,7 +48,7 @@ void VolumeTracker::Walk(const Vec3& origin,
   const Vec3 o = g.WorldToLocal(origin);
   const Vec3 d = g.WorldToLocalDirection(direction);
   double t0, t1;
-  if (!IntersectBox(g.LocalExtent(), o, d, t0, t1))
+  if (!IntersectVolumeBox(g, o, d, t0, t1))
   {
     return;
   }
@@ -80,13 +73,19 @@ void VolumeTracker::Walk(const Vec3& origin,
     {
       const double p = io[a] + (t + 1e-9 * (1.0 + t)) * id[a];
       c[a] = std::clamp(static_cast<int>(std::floor(p / B)), 0, cells[a] - 1);
+      // The first and last cells reach to the box's faces (cell data's border beyond the
+      // lattice takes the values at its faces, which those cells bound).
+      const double lower = c[a] == 0 ? -g.Border : c[a] * B;
+      const double upper = c[a] == cells[a] - 1
+        ? std::max((c[a] + 1.0) * B, g.Dimensions[a] - 1 + g.Border)
+        : (c[a] + 1.0) * B;
       if (id[a] > 0.0)
       {
-        exit = std::min(exit, ((c[a] + 1) * B - io[a]) / id[a]);
+        exit = std::min(exit, (upper - io[a]) / id[a]);
       }
       else if (id[a] < 0.0)
       {
-        exit = std::min(exit, (c[a] * B - io[a]) / id[a]);
+        exit = std::min(exit, (lower - io[a]) / id[a]);
       }
     }
     exit = std::max(exit, t + 1e-12);
@@ -261,7 +260,7 @@ Image RenderPathTraced(const VolumeScene& scene,
     return image;
   }
   const MajorantGrid majorants(
-    scene.Scalars, scene.Transfer, scene.UnitDistance, settings.MajorantCellSize, &scene.Clip);
+    Classifier(scene), scene.Scalars.Geometry, settings.MajorantCellSize, &scene.Clip);
   const VolumeTracker tracker(scene, majorants);
   const PathContext context{ scene, p, settings, tracker };
   std::vector<double> sum(4 * static_cast<std::size_t>(image.Width) * image.Height, 0.0);

@@ -81,6 +81,7 @@ private:
     Visit&& visit) const;
   const VolumeScene& Scene;
   const MajorantGrid& Majorants;
+  Classifier Classify;
 };
 
 } // namespace avs

@@ -2,6 +2,7 @@
 
 #include "AmbientOcclusion.h"
 #include "AveragedExtinction.h"
+#include "Classifier.h"
 #include "Extinction.h"
 #include "LightVolume.h"
 #include "Parallel.h"
@@ -25,21 +26,45 @@ Vec3 Image::Composited(int x, int y, const Vec3& background) const
 Grid ExtinctionGrid(const VolumeScene& scene)
 {
   Grid out(scene.Scalars.Geometry);
-  for (std::size_t i = 0; i < out.Values.size(); ++i)
-  {
-    out.Values[i] = static_cast<float>(
-      OpacityToExtinction(scene.Transfer.OpacityAt(scene.Scalars.Values[i]), scene.UnitDistance));
-  }
+  const Classifier classifier(scene);
+  const auto& n = out.Geometry.Dimensions;
+  ParallelFor(n[2],
+    [&](std::int64_t b, std::int64_t e)
+    {
+      for (std::int64_t k = b; k < e; ++k)
+        for (int j = 0; j < n[1]; ++j)
+          for (int i = 0; i < n[0]; ++i)
+          {
+            out.At(i, j, static_cast<int>(k)) =
+              static_cast<float>(classifier.AtVoxel(i, j, static_cast<int>(k)).SigmaT);
+          }
+    });
   ClearOutside(scene.Clip, out);
   return out;
 }
 
 namespace
 {
-inline double SampleLocal(const Grid& g, const Vec3& local, double outside)
+// A grid over the data's lattice (light volumes, averaged extinction, occlusion) at a local point
+// of the volume, clamped into its lattice as the GPU's textures clamp to the edge: cell data's
+// border reaches half a cell beyond the lattice.
+inline double SampleLocalClamped(const Grid& g, const Vec3& local)
 {
   const Vec3& s = g.Geometry.Spacing;
-  return g.SampleIndex({ local.x / s.x, local.y / s.y, local.z / s.z }, outside);
+  return g.SampleClamped({ local.x / s.x, local.y / s.y, local.z / s.z });
+}
+// The same at the nearest lattice point.
+inline double NearestLocalClamped(const Grid& g, const Vec3& local)
+{
+  const Vec3& s = g.Geometry.Spacing;
+  const auto& n = g.Geometry.Dimensions;
+  int i[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double c = std::clamp(local[a] / s[a], 0.0, static_cast<double>(n[a] - 1));
+    i[a] = std::min(static_cast<int>(std::floor(c + 0.5)), n[a] - 1);
+  }
+  return g.At(i[0], i[1], i[2]);
 }
 } // namespace
 
@@ -121,6 +146,7 @@ constexpr int MaximumRaySamples = 1 << 26;
 
 // One ray, front to back. Returns premultiplied L and alpha.
 void CastRay(const VolumeScene& scene,
+  const Classifier& classifier,
   const ScatteringParameters& p,
   const PrecomputedVolumes& v,
   RenderMode mode,
@@ -132,7 +158,7 @@ void CastRay(const VolumeScene& scene,
   const Vec3 o = geometry.WorldToLocal(ray.Origin);
   const Vec3 d = geometry.WorldToLocalDirection(ray.Direction);
   double t0, t1;
-  if (!IntersectBox(geometry.LocalExtent(), o, d, t0, t1) || t1 <= 0.0)
+  if (!IntersectVolumeBox(geometry, o, d, t0, t1) || t1 <= 0.0)
   {
     return;
   }
@@ -161,24 +187,18 @@ void CastRay(const VolumeScene& scene,
   }
   const int lag = static_cast<int>(std::floor(lagSteps));
   const double fraction = lagSteps - lag;
-  const double nan = std::numeric_limits<double>::quiet_NaN();
   // sigma_t and colour at a local point: classification after interpolation, as on the GPU.
   auto classify = [&](const Vec3& x, double& sigmaT, Vec3& color)
   {
-    const double s = SampleLocal(scene.Scalars, x, nan);
-    if (!(s == s))
-    {
-      sigmaT = 0.0;
-      color = { 0, 0, 0 };
-      return;
-    }
-    sigmaT = OpacityToExtinction(scene.Transfer.OpacityAt(s), scene.UnitDistance);
-    color = scene.Transfer.ColorAt(s);
+    const Classified c = classifier.AtLocal(x);
+    sigmaT = c.SigmaT;
+    color = c.Color;
     if (scene.Clip.Clips() && !scene.Clip.IsInside(toIndex(x)))
     {
       sigmaT = 0.0; // clipped or cropped away
     }
   };
+  const bool nearest = scene.Medium.Sampling == Interpolation::Nearest;
   // Ambient in-scattering from the ball around the sample x (eqs. 8.8-8.9), per unit of the
   // transmittance and of the ray's length.
   auto inscattered = [&](const Vec3& x)
@@ -190,14 +210,17 @@ void CastRay(const VolumeScene& scene,
     {
       return Vec3{ 0, 0, 0 };
     }
-    const double tau = p.AmbientRadius * SampleLocal(v.AveragedAtVoxels, x, 0.0);
+    // The GPU keeps it beside the scalars in one texture, read with the interpolation type.
+    const double tau = p.AmbientRadius *
+      (nearest ? NearestLocalClamped(v.AveragedAtVoxels, x)
+               : SampleLocalClamped(v.AveragedAtVoxels, x));
     const Vec3 world = geometry.LocalToWorld(x);
     Vec3 inscatter{ 0, 0, 0 };
     for (std::size_t j = 0; j < scene.Lights.size(); ++j)
     {
       const Light& light = scene.Lights[j];
       const double cosTheta = Dot(light.PropagationDirection(world), -ray.Direction);
-      const double transmittance = SampleLocal(v.LightVolumes[j], x, 1.0);
+      const double transmittance = SampleLocalClamped(v.LightVolumes[j], x);
       inscatter = inscatter +
         light.FreeIrradiance(world) * (transmittance * v.Slice.InScatteringCos(cosTheta, tau));
     }
@@ -228,7 +251,7 @@ void CastRay(const VolumeScene& scene,
     }
     else if (mode == RenderMode::AmbientOcclusion)
     {
-      double weight = p.AmbientWeight * SampleLocal(v.Occlusion, x, 1.0) + p.EmissionWeight;
+      double weight = p.AmbientWeight * SampleLocalClamped(v.Occlusion, x) + p.EmissionWeight;
       if (p.DirectLightWeight > 0.0 && sigmaT > 0.0)
       {
         const Vec3 world = geometry.LocalToWorld(x);
@@ -283,6 +306,7 @@ Image RenderReference(const VolumeScene& scene,
   image.Height = std::max(0, height);
   image.Pixels.assign(4 * static_cast<std::size_t>(image.Width) * image.Height, 0.0f);
   std::atomic<int> rows{ 0 };
+  const Classifier classifier(scene);
   const std::thread::id caller = std::this_thread::get_id();
   ParallelFor(image.Height,
     [&](std::int64_t b, std::int64_t e)
@@ -292,7 +316,7 @@ Image RenderReference(const VolumeScene& scene,
         for (int x = 0; x < image.Width; ++x)
         {
           const Ray ray = camera.GenerateRay(x + 0.5, y + 0.5, image.Width, image.Height);
-          CastRay(scene, p, volumes, mode, ray, image.At(x, static_cast<int>(y)));
+          CastRay(scene, classifier, p, volumes, mode, ray, image.At(x, static_cast<int>(y)));
         }
         const int done = ++rows;
         if (progress && std::this_thread::get_id() == caller)

@@ -8,6 +8,7 @@
 #include "ClipRegion.h"
 #include "Grid.h"
 #include "Lights.h"
+#include "Medium.h"
 #include "ScatteringParameters.h"
 #include "ScatteringTable.h"
 #include "TransferFunction.h"
@@ -20,14 +21,17 @@
 namespace avs
 {
 
-/// What the renderers draw: point scalars on a grid, the transfer functions, the unit distance of
+/// What the renderers draw: the scalars on a grid, the transfer functions, the unit distance of
 /// the opacity, the lights, the background behind the volume, and which part of the volume is
-/// there (clipping planes and cropping, ClipRegion.h).
+/// there (clipping planes and cropping, ClipRegion.h). Scalars, Transfer and UnitDistance are
+/// component 0; Medium holds the rest (more components, gradient opacity, interpolation, NaN
+/// voxels, a mask), and Classifier turns both into sigma_t and colour.
 struct VolumeScene
 {
   Grid Scalars;
   TransferFunction Transfer;
   double UnitDistance = 1.0;
+  MediumOptions Medium;
   std::vector<Light> Lights;
   Vec3 Background{ 0, 0, 0 };
   ClipRegion Clip; ///< in the index frame of Scalars; material outside is absent
@@ -64,8 +68,8 @@ struct PrecomputedVolumes
   ScatteringSlice Slice;          ///< A and F for the current g and albedo
 };
 
-/// sigma_t at every voxel from the scalars and the opacity transfer function (0 outside the
-/// scene's clip region).
+/// sigma_t at every voxel of the scalars' grid, classified (Classifier::AtVoxel); 0 outside the
+/// scene's clip region.
 Grid ExtinctionGrid(const VolumeScene& scene);
 
 /// Computes what `mode` needs (the table is needed for ambient scattering). Returns false and

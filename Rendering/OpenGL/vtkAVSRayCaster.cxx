@@ -54,15 +54,27 @@ void Replace(std::string& s, const std::string& what, const std::string& with)
 // and for ambient scattering the ring buffer's size (or the explicit look-ahead), the light
 // textures to fetch, emission and the per-ray table columns of directional lights. One program
 // per combination.
-std::string ProgramDefines(const vtkAVSRayCaster::Frame& frame, int tauNodes)
+std::string ProgramDefines(const vtkAVSRayCaster::Frame& frame,
+  int tauNodes,
+  const vtkAVSClassification::Layout& layout,
+  int averagedChannel)
 {
+  // The classification's choices (avs_classify.glsl); ambient scattering reads the volume's
+  // channels and the averaged extinction from one texture where they fit.
+  std::string defines = layout.Defines();
+  if (frame.Mode == avs::RenderMode::AmbientScattering)
+  {
+    defines += averagedChannel >= 0 ? "#define AVS_VOLUME_TEXTURE u_scalarsAveraged\n"
+                                      "#define AVS_AVERAGED_CHANNEL " +
+        std::to_string(averagedChannel) + "\n"
+                                    : std::string("#define AVS_AVERAGED_TEXTURE\n");
+  }
   if (frame.Mode == avs::RenderMode::EmissionAbsorption)
   {
-    return std::string();
+    return defines;
   }
   const avs::ScatteringParameters& p = frame.Parameters;
-  std::string defines =
-    "#define AVS_NUMBER_OF_LIGHTS " + std::to_string(frame.Lights.size()) + "\n";
+  defines += "#define AVS_NUMBER_OF_LIGHTS " + std::to_string(frame.Lights.size()) + "\n";
   int positional = 0;
   for (std::size_t j = 0; j < frame.Lights.size(); ++j)
   {
@@ -134,6 +146,7 @@ void vtkAVSRayCaster::SetWindow(vtkOpenGLRenderWindow* window)
   {
     this->ReleaseGraphicsResources(this->Window);
     this->Window = window;
+    this->Classification.SetWindow(window);
   }
 }
 
@@ -147,8 +160,8 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
   {
     context->PushContext();
   }
+  this->Classification.ReleaseGraphicsResources(window);
   for (vtkTextureObject* t : { this->Scalars.Get(),
-         this->Transfer.Get(),
          this->ScalarsAveraged.Get(),
          this->AveragedExtinction.Get(),
          this->Occlusion.Get(),
@@ -165,8 +178,8 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
       t->ReleaseGraphicsResources(window);
     }
   }
-  this->Scalars = this->Transfer = this->ScalarsAveraged = this->AveragedExtinction =
-    this->Occlusion = this->Table = this->Depth = nullptr;
+  this->Scalars = this->ScalarsAveraged = this->AveragedExtinction = this->Occlusion = this->Table =
+    this->Depth = nullptr;
   for (auto& t : this->LightVolumes)
   {
     t = nullptr;
@@ -203,6 +216,7 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
     *program = 0;
   }
   this->ComputeSupport = -1; // asked again in the next context
+  this->AverageDefines.clear();
   this->SoftwareRenderer = -1;
   if (window == this->Window)
   {
@@ -326,10 +340,38 @@ bool vtkAVSRayCaster::UploadScalarGrid(vtkSmartPointer<vtkTextureObject>& textur
   return true;
 }
 
-bool vtkAVSRayCaster::UploadScalars(const avs::Grid& scalars, std::string& error)
+bool vtkAVSRayCaster::UploadScalars(const avs::VolumeScene& scene, std::string& error)
 {
-  return this->UploadScalarGrid(
-    this->Scalars, scalars.Geometry.Dimensions, 1, scalars.Values.data(), error);
+  const vtkAVSClassification::Layout layout = vtkAVSClassification::LayoutOf(scene);
+  const std::vector<float> packed = vtkAVSClassification::PackScalars(scene, layout);
+  if (!this->UploadScalarGrid(this->Scalars,
+        scene.Scalars.Geometry.Dimensions,
+        layout.ScalarChannels(),
+        packed.data(),
+        error))
+  {
+    return false;
+  }
+  this->ScalarLayout = layout;
+  return true;
+}
+
+bool vtkAVSRayCaster::UploadClassification(const avs::VolumeScene& scene, std::string& error)
+{
+  this->Classification.SetWindow(this->Window);
+  return this->Classification.Upload(scene, error);
+}
+
+int vtkAVSRayCaster::AveragedChannelFor(const vtkAVSClassification::Layout& layout)
+{
+  const int k = layout.ScalarChannels();
+  return k < 4 ? k : -1;
+}
+
+int vtkAVSRayCaster::AveragedComponentsFor(const vtkAVSClassification::Layout& layout)
+{
+  const int channel = AveragedChannelFor(layout);
+  return channel < 0 ? 1 : (channel + 1 == 2 ? 2 : 4); // image formats: r32f, rg32f, rgba32f
 }
 
 bool vtkAVSRayCaster::UploadOcclusion(const avs::Grid& occlusion, std::string& error)
@@ -372,24 +414,37 @@ bool vtkAVSRayCaster::EnsureLightTextures(const std::array<int, 3>& dimensions,
   return true;
 }
 
-bool vtkAVSRayCaster::UploadScalarsAveraged(const avs::Grid& scalars,
+bool vtkAVSRayCaster::UploadScalarsAveraged(const avs::VolumeScene& scene,
   const avs::Grid& averagedAtVoxels,
   std::string& error)
 {
-  const std::size_t voxels = scalars.Values.size();
+  const std::size_t voxels = scene.Scalars.Values.size();
   if (averagedAtVoxels.Values.size() != voxels)
   {
     error = "the averaged extinction is not on the data's grid";
     return false;
   }
-  std::vector<float> packed(2 * voxels);
-  for (std::size_t i = 0; i < voxels; ++i)
+  const vtkAVSClassification::Layout layout = vtkAVSClassification::LayoutOf(scene);
+  const int channel = AveragedChannelFor(layout);
+  const int components = AveragedComponentsFor(layout);
+  std::vector<float> packed(components * voxels, 0.0f);
+  if (channel >= 0)
   {
-    packed[2 * i] = scalars.Values[i];
-    packed[2 * i + 1] = averagedAtVoxels.Values[i];
+    const int k = layout.ScalarChannels();
+    const std::vector<float> scalars = vtkAVSClassification::PackScalars(scene, layout);
+    for (std::size_t i = 0; i < voxels; ++i)
+    {
+      std::copy(&scalars[k * i], &scalars[k * i] + k, &packed[components * i]);
+      packed[components * i + channel] = averagedAtVoxels.Values[i];
+    }
   }
+  else
+  {
+    packed = averagedAtVoxels.Values;
+  }
+  this->AveragedChannel = channel;
   return this->UploadScalarGrid(
-    this->ScalarsAveraged, scalars.Geometry.Dimensions, 2, packed.data(), error);
+    this->ScalarsAveraged, scene.Scalars.Geometry.Dimensions, components, packed.data(), error);
 }
 
 bool vtkAVSRayCaster::UploadLightVolumes(const std::vector<avs::Grid>& lights, std::string& error)
@@ -447,40 +502,6 @@ bool vtkAVSRayCaster::UploadLightVolumes(const std::vector<avs::Grid>& lights, s
   return true;
 }
 
-bool vtkAVSRayCaster::UploadTransferFunction(const avs::TransferFunction& tf, std::string& error)
-{
-  const std::size_t n = std::min(tf.Color.size(), tf.Opacity.size());
-  std::vector<float> rgba(4 * n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    rgba[4 * i] = tf.Color[i][0];
-    rgba[4 * i + 1] = tf.Color[i][1];
-    rgba[4 * i + 2] = tf.Color[i][2];
-    rgba[4 * i + 3] = tf.Opacity[i];
-  }
-  if (this->Transfer)
-  {
-    this->Transfer->ReleaseGraphicsResources(this->Window);
-  }
-  this->Transfer = vtkSmartPointer<vtkTextureObject>::New();
-  this->Transfer->SetContext(this->Window);
-  ConfigureSampling(this->Transfer);
-  // Half floats: a 128-bit texel filters at a quarter of the rate of a 64-bit one on NVIDIA
-  // GPUs, and this texture is read at every sample (measured on an H100: EA 1.35x VTK's frame
-  // time with RGBA32F, 0.72x with RGBA16F).
-  this->Transfer->SetInternalFormat(GL_RGBA16F);
-  if (!this->Transfer->Create1DFromRaw(static_cast<unsigned int>(n), 4, VTK_FLOAT, rgba.data()))
-  {
-    error = "the GPU could not allocate the transfer-function texture";
-    this->Transfer = nullptr;
-    return false;
-  }
-  this->TransferSize = static_cast<float>(n);
-  this->ScalarRange[0] = static_cast<float>(tf.Minimum);
-  this->ScalarRange[1] = static_cast<float>(tf.Maximum > tf.Minimum ? tf.Maximum : tf.Minimum + 1);
-  return true;
-}
-
 bool vtkAVSRayCaster::UploadTableSlice(const avs::ScatteringSlice& slice, std::string& error)
 {
   if (this->Table)
@@ -528,8 +549,8 @@ bool vtkAVSRayCaster::EnsureProgram(avs::RenderMode mode, const std::string& def
   std::string dec, init, sample;
   SplitEffect(effect, dec, init, sample);
   // The compile-time choices go before the first snippet that may test them.
-  Replace(fs, "//AVS::Classify::Dec", avs_classify);
-  Replace(fs, "//AVS::Lights::Dec", defines + avs_lights);
+  Replace(fs, "//AVS::Classify::Dec", defines + avs_classify);
+  Replace(fs, "//AVS::Lights::Dec", avs_lights);
   Replace(fs, "//AVS::Clip::Dec", avs_clip);
   Replace(fs, "//AVS::Effect::Dec", dec);
   Replace(fs, "//AVS::Effect::Init", init);
@@ -571,13 +592,36 @@ bool vtkAVSRayCaster::SupportsComputeShaders()
       "#define AVS_LIGHT_FORMAT " + (this->IsSoftwareRenderer() ? "rgba32f" : "rgba16f") + "\n");
   this->ComputeProgram = this->BuildComputeProgram(lightVolume.c_str(), "light-volume");
   this->OcclusionProgram = this->BuildComputeProgram(avs_occlusion_cs, "ambient-occlusion");
-  std::string average = avs_average_cs;
-  Replace(average, "//AVS::Classify::Dec", avs_classify);
-  Replace(average, "//AVS::Clip::Dec", avs_clip);
-  this->AverageProgram = this->BuildComputeProgram(average.c_str(), "averaged-extinction");
+  // The averaged-extinction program depends on the classification; it is built for the
+  // current one when first needed (ComputeAveragedExtinction). Here: that it compiles.
+  vtkAVSClassification::Layout simplest;
+  const std::string defines =
+    simplest.Defines() + "#define AVS_AVERAGED_CHANNEL 1\n#define AVS_FINAL_FORMAT rg32f\n";
+  this->AverageProgram = this->BuildAverageProgram(defines);
   this->ComputeSupport =
     this->ComputeProgram && this->OcclusionProgram && this->AverageProgram ? 1 : 0;
   return this->ComputeSupport == 1;
+}
+
+unsigned int vtkAVSRayCaster::BuildAverageProgram(const std::string& defines)
+{
+  if (this->AverageProgram && this->AverageDefines == defines)
+  {
+    return this->AverageProgram;
+  }
+  if (this->AverageProgram)
+  {
+    glDeleteProgram(this->AverageProgram);
+    this->AverageProgram = 0;
+  }
+  std::string average = avs_average_cs;
+  const std::size_t line = average.find('\n') + 1; // after #version
+  average.insert(line, defines);
+  Replace(average, "//AVS::Classify::Dec", avs_classify);
+  Replace(average, "//AVS::Clip::Dec", avs_clip);
+  this->AverageProgram = this->BuildComputeProgram(average.c_str(), "averaged-extinction");
+  this->AverageDefines = this->AverageProgram ? defines : std::string();
+  return this->AverageProgram;
 }
 
 unsigned int vtkAVSRayCaster::BuildComputeProgram(const char* source, const char* what)
@@ -613,14 +657,28 @@ unsigned int vtkAVSRayCaster::BuildComputeProgram(const char* source, const char
 
 bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimensions,
   const std::array<int, 3>& lightDimensions,
-  double unitDistance,
   const std::array<int, 3>& halfWidths,
   const avs::ClipRegion& clip,
   std::string& error)
 {
-  if (!this->SupportsComputeShaders() || !this->Scalars || !this->Transfer)
+  if (!this->SupportsComputeShaders() || !this->Scalars || !this->Classification.IsUploaded())
   {
     error = "no compute shaders, scalars or transfer function";
+    return false;
+  }
+  // The program for this classification, and how pass 4 packs its result.
+  const vtkAVSClassification::Layout& layout = this->Classification.GetLayout();
+  const int channel = AveragedChannelFor(layout);
+  const int components = AveragedComponentsFor(layout);
+  const GLenum finalFormat = components == 1 ? GL_R32F : (components == 2 ? GL_RG32F : GL_RGBA32F);
+  const std::string defines = layout.Defines() +
+    (channel >= 0 ? "#define AVS_AVERAGED_CHANNEL " + std::to_string(channel) + "\n"
+                  : std::string("#define AVS_AVERAGED_TEXTURE\n")) +
+    "#define AVS_FINAL_FORMAT " +
+    (components == 1 ? "r32f" : (components == 2 ? "rg32f" : "rgba32f")) + "\n";
+  if (!this->BuildAverageProgram(defines))
+  {
+    error = "the averaged-extinction compute shader did not compile (see the log above)";
     return false;
   }
   // Pass 0 classifies into Scratch[0] (data grid); the x pass shrinks x to the light grid (into
@@ -639,10 +697,11 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
       return false;
     }
   }
-  if (!this->UploadScalarGrid(this->ScalarsAveraged, d, 2, nullptr, error))
+  if (!this->UploadScalarGrid(this->ScalarsAveraged, d, components, nullptr, error))
   {
     return false;
   }
+  this->AveragedChannel = channel;
   const GLuint program = this->AverageProgram;
   vtkAVSRenderPasses::DiscardErrors(); // the check at the end is of this pass alone
   this->Window->GetShaderCache()->ReleaseCurrentShader();
@@ -651,15 +710,13 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
   const double count =
     (2.0 * halfWidths[0] + 1) * (2.0 * halfWidths[1] + 1) * (2.0 * halfWidths[2] + 1);
   glUniform1f(location("u_inverseCount"), static_cast<float>(1.0 / count));
+  this->SetVolumeFilter(this->Scalars, layout.Nearest);
   this->Scalars->Activate();
-  this->Transfer->Activate();
   glUniform1i(location("u_scalars"), this->Scalars->GetTextureUnit());
-  glUniform1i(location("u_transfer"), this->Transfer->GetTextureUnit());
-  glUniform2f(location("u_scalarRange"), this->ScalarRange[0], this->ScalarRange[1]);
-  glUniform1f(location("u_transferSize"), this->TransferSize);
-  glUniform1f(location("u_unitDistance"), static_cast<float>(unitDistance));
+  this->Classification.Bind(program);
   vtkAVSShaderOptions::SetClipUniforms(program, clip);
-  glBindImageTexture(2, this->ScalarsAveraged->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
+  glBindImageTexture(
+    2, this->ScalarsAveraged->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, finalFormat);
   for (int pass = 0; pass < 4; ++pass)
   {
     // Pass p reads images[p - 1] (pass 0: the scalars) and writes images[p].
@@ -702,16 +759,26 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
   this->AveragedExtinction->Deactivate();
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
   glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-  glBindImageTexture(2, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
+  glBindImageTexture(2, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, finalFormat);
   glUseProgram(0);
   this->Scalars->Deactivate();
-  this->Transfer->Deactivate();
+  this->Classification.Unbind();
   if (const GLenum status = glGetError())
   {
     error = "the averaged-extinction compute pass failed (GL error " + std::to_string(status) + ")";
     return false;
   }
   return true;
+}
+
+void vtkAVSRayCaster::SetVolumeFilter(vtkTextureObject* texture, bool nearest)
+{
+  if (texture)
+  {
+    const int filter = nearest ? vtkTextureObject::Nearest : vtkTextureObject::Linear;
+    texture->SetMinificationFilter(filter);
+    texture->SetMagnificationFilter(filter);
+  }
 }
 
 bool vtkAVSRayCaster::ComputeOcclusion(const avs::Grid& extinction,
@@ -760,6 +827,7 @@ bool vtkAVSRayCaster::ComputeOcclusion(const avs::Grid& extinction,
   const auto& d = g.Dimensions;
   glUniform3i(location("u_dimensions"), d[0], d[1], d[2]);
   glUniform3i(location("u_targetDimensions"), dimensions[0], dimensions[1], dimensions[2]);
+  glUniform1f(location("u_border"), static_cast<float>(g.Border));
   glUniform1i(location("u_directions"), directions);
   glUniform1i(location("u_steps"), n);
   glUniform1f(location("u_step"), static_cast<float>(h));
@@ -944,14 +1012,20 @@ void vtkAVSRayCaster::CaptureDepth(int x, int y, int width, int height)
 bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::string& error)
 {
   vtkOpenGLRenderWindow* window = this->Window;
-  if (!window || !this->Scalars || !this->Transfer)
+  if (!window || !this->Scalars || !this->Classification.IsUploaded())
   {
     error = "nothing uploaded";
     return false;
   }
+  const vtkAVSClassification::Layout& layout = this->Classification.GetLayout();
+  if (layout.ScalarChannels() != this->ScalarLayout.ScalarChannels())
+  {
+    error = "the scalars and the classification do not match";
+    return false;
+  }
   const bool blend = frame.Mode == avs::RenderMode::EmissionAbsorption;
   if (!this->EnsureProgram(frame.Mode,
-        ProgramDefines(frame, static_cast<int>(this->TableSize[1])) +
+        ProgramDefines(frame, static_cast<int>(this->TableSize[1]), layout, this->AveragedChannel) +
           vtkAVSShaderOptions::ClipDefines(frame.Clip) +
           (blend ? vtkAVSShaderOptions::BlendDefines(frame.Blend) : std::string())))
   {
@@ -1000,20 +1074,22 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     static_cast<float>(frame.Spacing.y),
     static_cast<float>(frame.Spacing.z) };
   program->SetUniform3f("u_spacing", spacing);
+  program->SetUniformf("u_border", static_cast<float>(frame.Border));
   vtkAVSShaderOptions::SetClipUniforms(program, frame.Clip);
   if (blend)
   {
     vtkAVSShaderOptions::SetBlendUniforms(program, frame.Blend);
   }
   program->SetUniformi("u_depth", this->Depth->GetTextureUnit());
-  this->Scalars->Activate();
-  program->SetUniformi("u_scalars", this->Scalars->GetTextureUnit());
-  this->Transfer->Activate();
-  program->SetUniformi("u_transfer", this->Transfer->GetTextureUnit());
-  const float range[2] = { this->ScalarRange[0], this->ScalarRange[1] };
-  program->SetUniform2f("u_scalarRange", range);
-  program->SetUniformf("u_transferSize", this->TransferSize);
-  program->SetUniformf("u_unitDistance", static_cast<float>(frame.UnitDistance));
+  // The volume and its classification (avs_classify.glsl), with the interpolation type's filter.
+  SetVolumeFilter(this->Scalars, layout.Nearest);
+  SetVolumeFilter(this->ScalarsAveraged, layout.Nearest);
+  if (frame.Mode != avs::RenderMode::AmbientScattering || this->AveragedChannel < 0)
+  {
+    this->Scalars->Activate();
+    program->SetUniformi("u_scalars", this->Scalars->GetTextureUnit());
+  }
+  this->Classification.Bind(static_cast<unsigned int>(program->GetHandle()));
   const avs::ScatteringParameters& p = frame.Parameters;
   program->SetUniformf("u_sampleDistance", static_cast<float>(p.SampleDistance));
   program->SetUniformf("u_termination", static_cast<float>(p.TerminationTransmittance));
@@ -1084,7 +1160,8 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
       return false;
     }
     this->ScalarsAveraged->Activate();
-    program->SetUniformi("u_scalarsAveraged", this->ScalarsAveraged->GetTextureUnit());
+    program->SetUniformi(this->AveragedChannel >= 0 ? "u_scalarsAveraged" : "u_averagedAtVoxels",
+      this->ScalarsAveraged->GetTextureUnit());
     const char* names[NumberOfLightTextures] = { "u_lightVolumes0", "u_lightVolumes1" };
     for (int t = 0; t < textures; ++t)
     {
@@ -1137,9 +1214,9 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     }
   }
 
+  this->Classification.Unbind();
   for (vtkTextureObject* t : { this->Depth.Get(),
          this->Scalars.Get(),
-         this->Transfer.Get(),
          this->Occlusion.Get(),
          this->ScalarsAveraged.Get(),
          this->LightVolumes[0].Get(),

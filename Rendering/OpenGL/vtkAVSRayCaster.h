@@ -13,9 +13,11 @@
 #include "ClipRegion.h"
 #include "Grid.h"
 #include "Lights.h"
+#include "ReferenceRenderer.h"
 #include "ScatteringParameters.h"
 #include "ScatteringTable.h"
 #include "TransferFunction.h"
+#include "vtkAVSClassification.h"
 #include "vtkAVSShaderOptions.h"
 
 #include "vtkAVSImageSampler.h"
@@ -66,13 +68,17 @@ public:
   /// Largest 3D texture size of the context (0 without a context).
   int MaximumTextureSize3D() const;
 
-  /// Texture uploads; return false and say why in `error` when the GPU refuses.
-  bool UploadScalars(const avs::Grid& scalars, std::string& error);
-  bool UploadTransferFunction(const avs::TransferFunction& tf, std::string& error);
-  /// The CPU's ambient-scattering volumes as the ray caster fetches them: the scalars beside
-  /// the averaged extinction interpolated at the voxels (both on the data's grid, one
-  /// two-channel texture) ...
-  bool UploadScalarsAveraged(const avs::Grid& scalars,
+  /// Texture uploads; return false and say why in `error` when the GPU refuses. The volume:
+  /// its components (and the validity of NaN data) in one texture
+  /// (vtkAVSClassification::PackScalars).
+  bool UploadScalars(const avs::VolumeScene& scene, std::string& error);
+  /// The classification's tables, mask and uniforms (vtkAVSClassification), after the scalars.
+  bool UploadClassification(const avs::VolumeScene& scene, std::string& error);
+  /// The CPU's ambient-scattering volumes as the ray caster fetches them: the volume's
+  /// channels beside the averaged extinction interpolated at the voxels (both on the data's
+  /// grid, one texture when they fit into four channels, else the averaged extinction in a
+  /// texture of its own) ...
+  bool UploadScalarsAveraged(const avs::VolumeScene& scene,
     const avs::Grid& averagedAtVoxels,
     std::string& error);
   /// ... and up to 8 light volumes on one (the light) grid, four to an RGBA texture.
@@ -95,7 +101,6 @@ public:
   /// sigma_t is 0 outside `clip` (in the data's index frame).
   bool ComputeAveragedExtinction(const std::array<int, 3>& dimensions,
     const std::array<int, 3>& lightDimensions,
-    double unitDistance,
     const std::array<int, 3>& halfWidths,
     const avs::ClipRegion& clip,
     std::string& error);
@@ -121,11 +126,11 @@ public:
     vtkMatrix4x4* WorldToIndex = nullptr; ///< row-major, VTK convention
     std::array<int, 3> Dimensions{ 1, 1, 1 };
     avs::Vec3 Spacing{ 1, 1, 1 };     ///< data units per index step (the grid's spacing)
+    double Border = 0.0;              ///< the box beyond the samples, in voxels (cell data: 0.5)
     avs::ClipRegion Clip;             ///< clipping planes and cropping, index frame
     vtkAVSShaderOptions::Blend Blend; ///< emission-absorption only
     std::array<int, 3> LightVolumeDimensions{ 1, 1, 1 };
     std::array<int, 3> OcclusionDimensions{ 1, 1, 1 };
-    double UnitDistance = 1.0;
     std::vector<avs::Light> Lights; ///< world space
     bool Jitter = true;
     /// The volume and its mapper, for the render passes attached to the volume (SSAO's draw
@@ -154,6 +159,8 @@ private:
     std::string& error,
     unsigned int internalFormat = 0);
   bool EnsureProgram(avs::RenderMode mode, const std::string& defines);
+  /// The filter of a volume texture: the nearest voxel or trilinear (the interpolation type).
+  static void SetVolumeFilter(vtkTextureObject* texture, bool nearest);
   /// The light volumes' GL internal format: half floats on a GPU, floats on a software
   /// rasterizer.
   unsigned int LightVolumeFormat() const;
@@ -167,14 +174,28 @@ private:
   /// texture of the same depth format (multisampled framebuffers are resolved).
   void CaptureDepth(int x, int y, int width, int height);
   unsigned int BuildComputeProgram(const char* source, const char* what);
+  /// The averaged-extinction program for these defines (rebuilt when they change).
+  unsigned int BuildAverageProgram(const std::string& defines);
 
   /// Weak: the window may be deleted before the mapper (a volume removed from its renderer is
   /// not told), and its context took its resources with it.
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
-  vtkSmartPointer<vtkTextureObject> Scalars, Transfer, Occlusion, Table, Depth;
+  vtkSmartPointer<vtkTextureObject> Scalars, Occlusion, Table, Depth;
+  vtkAVSClassification Classification;
+  /// The layout the scalars were uploaded with (vtkAVSClassification::Layout).
+  vtkAVSClassification::Layout ScalarLayout;
   std::vector<float> LogGain; ///< log(F(tau) exp(2 tau)) on the table's tau nodes
-  /// Data grid, for ambient scattering: .r scalar, .g averaged sigma_t at the voxel.
+  /// Data grid, for ambient scattering: the volume's channels and then the averaged sigma_t at
+  /// the voxel (AveragedChannel) or, when they do not fit into four channels, the averaged
+  /// sigma_t alone (AveragedChannel -1).
   vtkSmartPointer<vtkTextureObject> ScalarsAveraged;
+  int AveragedChannel = 1;
+  /// Which channel of ScalarsAveraged holds the averaged extinction for a layout (-1: it is
+  /// alone in it), and its channel count.
+  static int AveragedChannelFor(const vtkAVSClassification::Layout& layout);
+  static int AveragedComponentsFor(const vtkAVSClassification::Layout& layout);
+  /// Classification and packing defines of the averaged-extinction program it was built with.
+  std::string AverageDefines;
   /// Packed on the light grid: (T0-T3), (T4-T7).
   vtkSmartPointer<vtkTextureObject> LightVolumes[NumberOfLightTextures];
   /// The averaged extinction on the light grid, which the light-volume pass samples.
@@ -197,8 +218,6 @@ private:
   mutable int SoftwareRenderer = -1; ///< -1 unknown, 0 no, 1 yes (IsSoftwareRenderer)
   std::array<int, 3> LightTextureDimensions{ 0, 0, 0 };
   bool DepthWarningGiven = false;
-  float TransferSize = 1.0f;
-  float ScalarRange[2] = { 0.0f, 1.0f };
   float TableSize[2] = { 1.0f, 1.0f };
   float TableTauMaximum = 1.0f;
 };

@@ -15,11 +15,24 @@
 // this sum. AVS_LIGHT_TEXTURES (0-2) says how many light-volume textures the lights need;
 // AVS_EMISSION is defined when the emission term is not zero. The choices are compile-time
 // because a software rasterizer runs every branch of a shader whatever its condition.
-#define AVS_EFFECT_VOLUME u_scalarsAveraged
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 #define AVS_EFFECT_TERMINATION
 #endif
-uniform sampler3D u_scalarsAveraged; // data grid: .r scalar, .g averaged sigma_t
+// The averaged sigma_t at the voxels (data grid): channel AVS_AVERAGED_CHANNEL of the volume
+// texture (u_scalarsAveraged, the volume's channels and then it), or, when they do not fit
+// into four channels, a texture of its own.
+#ifdef AVS_AVERAGED_TEXTURE
+uniform sampler3D u_averagedAtVoxels;
+float Averaged(vec4 voxel, vec3 coordinate)
+{
+  return textureLod(u_averagedAtVoxels, coordinate, 0.0).r;
+}
+#else
+float Averaged(vec4 voxel, vec3 coordinate)
+{
+  return voxel[AVS_AVERAGED_CHANNEL];
+}
+#endif
 // Light grid: tube transmittance of lights 0-3, then 4-7.
 #if AVS_LIGHT_TEXTURES > 0
 uniform sampler3D u_lightVolumes0;
@@ -181,7 +194,8 @@ bool EffectContinues(float T, int i)
     if (here.a > 0.0 && older >= u_termination)
     {
       float lagged = mix(newer, older, g_lagFraction);
-      L += lagged * dt * InScattered(index, origin + t * direction, direction, here, voxel.g);
+      L += lagged * dt *
+        InScattered(index, origin + t * direction, direction, here, Averaged(voxel, coordinate));
     }
 #else
     if (i == 0)
@@ -192,12 +206,14 @@ bool EffectContinues(float T, int i)
       {
         float tj = t + float(j) * dtWorld;
         vec3 first = io + tj * id;
-        vec4 firstVoxel = textureLod(u_scalarsAveraged, (first + 0.5) / u_dimensions, 0.0);
-        vec4 s1 = Classify(firstVoxel.r);
+        vec3 firstCoordinate = (first + 0.5) / u_dimensions;
+        vec4 firstVoxel = textureLod(AVS_VOLUME_TEXTURE, firstCoordinate, 0.0);
+        vec4 s1 = Classify(firstVoxel, firstCoordinate);
         AVS_CROP(s1, first);
         if (s1.a > 0.0)
         {
-          L += dt * InScattered(first, origin + tj * direction, direction, s1, firstVoxel.g);
+          L += dt * InScattered(first, origin + tj * direction, direction, s1,
+                      Averaged(firstVoxel, firstCoordinate));
         }
       }
     }
@@ -207,12 +223,14 @@ bool EffectContinues(float T, int i)
       float lagged = T * mix(extinction, 1.0, g_lagFraction);
       float ta = t + float(g_lag + 1) * dtWorld;
       vec3 ahead = io + ta * id;
-      vec4 aheadVoxel = textureLod(u_scalarsAveraged, (ahead + 0.5) / u_dimensions, 0.0);
-      vec4 s2 = Classify(aheadVoxel.r);
+      vec3 aheadCoordinate = (ahead + 0.5) / u_dimensions;
+      vec4 aheadVoxel = textureLod(AVS_VOLUME_TEXTURE, aheadCoordinate, 0.0);
+      vec4 s2 = Classify(aheadVoxel, aheadCoordinate);
       AVS_CROP(s2, ahead);
       if (s2.a > 0.0)
       {
-        L += lagged * dt * InScattered(ahead, origin + ta * direction, direction, s2, aheadVoxel.g);
+        L += lagged * dt * InScattered(ahead, origin + ta * direction, direction, s2,
+                             Averaged(aheadVoxel, aheadCoordinate));
       }
     }
 #endif

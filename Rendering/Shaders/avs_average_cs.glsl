@@ -11,19 +11,21 @@
 // interpolated trilinearly). Pass 3 also divides by the full box count, so voxels outside count
 // as 0; its result is what the light-volume pass samples. Pass 4 interpolates it back at the
 // data's voxels, beside each voxel's scalar, into the ray caster's two-channel volume texture
-// (.r scalar, .g averaged sigma_t), so that one fetch per sample gives both.
+// (the volume's channels, then the averaged sigma_t at channel AVS_AVERAGED_CHANNEL), so that
+// one fetch per sample gives both; with AVS_AVERAGED_TEXTURE (too many channels) it writes the
+// averaged sigma_t alone. The classification's defines and AVS_FINAL_FORMAT come before this.
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(r32f, binding = 0) uniform readonly image3D u_input;
 layout(r32f, binding = 1) uniform writeonly image3D u_output;
-layout(rg32f, binding = 2) uniform writeonly image3D u_final; // pass 4
+layout(AVS_FINAL_FORMAT, binding = 2) uniform writeonly image3D u_final; // pass 4
 uniform int u_pass;
 uniform ivec3 u_dimensions;  // of u_input (pass 0: of the data)
 uniform int u_targetLength;  // points of the target grid along this pass's axis
 uniform int u_halfWidth;     // k along this pass's axis
 uniform float u_inverseCount; // 1 / prod(2 k_a + 1), applied in the last pass
 
-uniform sampler3D u_scalars;  // passes 0 and 4
+// u_scalars (passes 0 and 4) is declared by the classification.
 uniform sampler3D u_averaged; // pass 4: the result of pass 3, on the target grid
 uniform vec3 u_target;        // pass 4: the target grid's dimensions
 // Pass 0: Classify(s), the ray caster's classification (avs_classify.glsl), and 0 outside
@@ -45,11 +47,12 @@ void main()
     ivec2 xy = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(xy, u_dimensions.xy)))
       return;
-    InitClassify();
     for (int z = 0; z < u_dimensions.z; ++z)
     {
       ivec3 v = ivec3(xy, z);
-      imageStore(u_output, v, vec4(Classify(texelFetch(u_scalars, v, 0).r).a * ClipInside(vec3(v), true)));
+      vec3 coordinate = (vec3(v) + 0.5) / vec3(u_dimensions);
+      imageStore(u_output, v,
+        vec4(Classify(texelFetch(u_scalars, v, 0), coordinate).a * ClipInside(vec3(v), true)));
     }
     return;
   }
@@ -64,7 +67,13 @@ void main()
     {
       ivec3 v = ivec3(xy, z);
       float averaged = textureLod(u_averaged, (vec3(v) * scale + 0.5) / u_target, 0.0).r;
-      imageStore(u_final, v, vec4(texelFetch(u_scalars, v, 0).r, averaged, 0.0, 0.0));
+#ifdef AVS_AVERAGED_TEXTURE
+      imageStore(u_final, v, vec4(averaged));
+#else
+      vec4 texel = texelFetch(u_scalars, v, 0);
+      texel[AVS_AVERAGED_CHANNEL] = averaged;
+      imageStore(u_final, v, texel);
+#endif
     }
     return;
   }

@@ -31,8 +31,8 @@ int g_count;   // samples averaged (3)
 // Colour and opacity (as the transfer function gives it) of scalar s.
 vec4 TransferAt(float s)
 {
-  vec4 c = Classify(s);
-  return vec4(c.rgb, 1.0 - exp(-c.a * u_unitDistance));
+  vec4 c = ClassifyValue(s);
+  return vec4(c.rgb, 1.0 - exp(-c.a * u_unitDistance[0]));
 }
 
 float Normalised(float s)
@@ -76,9 +76,11 @@ vec4 EffectOutput(vec3 L, float T)
   g_isoIndex = -1;
 #endif
 //AVS::Effect::Sample
-    if (AVS_KEPT(index))
+    // One component (the mapper refuses more); NaN voxels (validity 0) are skipped.
+    float valid = Validity(voxel, coordinate);
+    if (AVS_KEPT(index) && valid > 0.0)
     {
-      float s = voxel.r;
+      float s = Components(voxel, valid).x;
 #if AVS_BLEND == 1
       g_value = max(g_value, s);
 #elif AVS_BLEND == 2
@@ -90,7 +92,7 @@ vec4 EffectOutput(vec3 L, float T)
         ++g_count;
       }
 #elif AVS_BLEND == 4
-      g_value += TransferAt(s).a * (dt / u_unitDistance) * Normalised(s);
+      g_value += TransferAt(s).a * (dt / u_unitDistance[0]) * Normalised(s);
 #else
       if (g_isoIndex < 0)
       {

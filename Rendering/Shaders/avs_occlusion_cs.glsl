@@ -8,6 +8,7 @@ layout(r32f, binding = 0) uniform image3D u_target;
 uniform sampler3D u_extinction; // sigma_t on the data grid (texel centres = voxels)
 uniform ivec3 u_dimensions;       // of the data grid
 uniform ivec3 u_targetDimensions; // of the occlusion grid (same box, at most as fine)
+uniform float u_border;           // the volume box reaches this far beyond the lattice (cell data)
 uniform int u_directions;
 uniform int u_steps;
 uniform float u_step;              // R / n, world units
@@ -30,7 +31,10 @@ void main()
     for (int s = 0; s < u_steps; ++s)
     {
       vec3 index = base + (float(s) + 0.5) * u_offsets[k];
-      if (all(greaterThanEqual(index, vec3(-1e-6))) && all(lessThanEqual(index, n - 1.0 + 1e-6)))
+      // Inside the volume's box: the lattice widened by the border (cell data), where the
+      // texture clamps to the lattice's faces.
+      if (all(greaterThanEqual(index, vec3(-u_border - 1e-6))) &&
+        all(lessThanEqual(index, n - 1.0 + u_border + 1e-6)))
       {
         optical += texture(u_extinction, (index + 0.5) / n).r;
       }

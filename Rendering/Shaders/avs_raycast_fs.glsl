@@ -3,8 +3,9 @@
 // pixel from the inverse view-projection (camera inside the volume and parallel projection
 // included), clipped to the volume box and to the opaque geometry's depth, marched front to back
 // in equal steps, with the mapper's effect snippet (declarations, per-ray set-up and per-sample
-// code) put in at the three effect markers below. An effect may define AVS_EFFECT_VOLUME (a
-// sampler3D with the scalar in .r, fetched once per sample instead of u_scalars) and
+// code) put in at the three effect markers below. Each sample fetches one texel of the volume
+// texture (AVS_VOLUME_TEXTURE: the scalars, or ambient scattering's texture that holds them
+// beside the averaged extinction) and classifies it (avs_classify.glsl). An effect may define
 // AVS_EFFECT_TERMINATION (then its bool EffectContinues(float T, int i) ends the ray),
 // AVS_EFFECT_KEEPS_TRANSMITTANCE (then it updates T itself, as the blend modes other than
 // composite do) and AVS_EFFECT_OUTPUT (then vec4 EffectOutput(vec3 L, float T) gives the
@@ -23,16 +24,17 @@ in vec2 texCoord; // position in the viewport, [0, 1]^2 (from the quad's vertex 
 uniform mat4 u_ndcToWorld;   // inverse of the camera's world -> NDC
 uniform mat4 u_worldToIndex; // world -> continuous voxel index of the data
 uniform sampler2D u_depth;   // depth of what the renderer drew before
-uniform sampler3D u_scalars; // point scalars, component 0
 uniform vec3 u_dimensions;   // voxels per axis
 uniform vec3 u_spacing;      // data units per index step, per axis
+uniform float u_border;      // the box reaches this many voxels beyond them (cell data: 0.5)
 uniform float u_sampleDistance; // data units
 uniform float u_termination;    // stop when T falls below
 uniform int u_jitter;           // 1: jitter the first sample per pixel
 
 const float PI = 3.14159265358979;
 
-// Classify(s): colour and extinction of a scalar (avs_classify.glsl).
+// Classify(texel, coordinate): colour and extinction of a sample (avs_classify.glsl), which
+// declares the volume texture AVS_VOLUME_TEXTURE.
 //AVS::Classify::Dec
 
 // Henyey-Greenstein, mu = cosine between the propagation directions of incoming and scattered
@@ -66,8 +68,8 @@ void main()
   // The ray in index space: index(t) = io + t * id for world distance t.
   vec3 io = (u_worldToIndex * vec4(origin, 1.0)).xyz;
   vec3 id = (u_worldToIndex * vec4(direction, 0.0)).xyz;
-  vec3 lo = -io / id;
-  vec3 hi = (u_dimensions - 1.0 - io) / id;
+  vec3 lo = (-u_border - io) / id;
+  vec3 hi = (u_dimensions - 1.0 + u_border - io) / id;
   vec3 tmin = min(lo, hi);
   vec3 tmax = max(lo, hi);
   float t0 = max(max(max(tmin.x, tmin.y), tmin.z), 0.0);
@@ -102,7 +104,6 @@ void main()
   vec3 inverseDimensions = 1.0 / u_dimensions;
   vec3 firstCoordinate = (io + (t0 + offset * dtWorld) * id + 0.5) * inverseDimensions;
   vec3 stepCoordinate = dtWorld * id * inverseDimensions;
-  InitClassify();
 
   //AVS::Effect::Init
 
@@ -121,13 +122,8 @@ void main()
     float t = t0 + (float(i) + offset) * dtWorld;
     vec3 index = io + t * id;
     vec3 coordinate = firstCoordinate + float(i) * stepCoordinate;
-#ifdef AVS_EFFECT_VOLUME
-    // The effect's own texture, with the scalar in .r and its per-sample data in .g.
-    vec4 voxel = textureLod(AVS_EFFECT_VOLUME, coordinate, 0.0);
-#else
-    vec4 voxel = vec4(textureLod(u_scalars, coordinate, 0.0).r);
-#endif
-    vec4 here = Classify(voxel.r);
+    vec4 voxel = textureLod(AVS_VOLUME_TEXTURE, coordinate, 0.0);
+    vec4 here = Classify(voxel, coordinate);
     AVS_CROP(here, index);
     float extinction = exp(-here.a * dt);
     //AVS::Effect::Sample

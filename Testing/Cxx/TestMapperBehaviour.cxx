@@ -399,18 +399,21 @@ int main(int argc, char* argv[])
       expectError(noScalars, "no point scalars");
       auto vectors = MakeTestVolume(8);
       vtkNew<vtkFloatArray> v;
-      v->SetNumberOfComponents(3);
+      v->SetNumberOfComponents(5); // VTK's mappers take 1-4
       v->SetNumberOfTuples(vectors->GetNumberOfPoints());
       v->Fill(1.0);
       vectors->GetPointData()->SetScalars(v);
       expectError(vectors, "components");
-      auto nan = MakeTestVolume(8);
-      vtkNew<vtkDoubleArray> d;
-      d->SetNumberOfTuples(nan->GetNumberOfPoints());
-      d->Fill(100.0);
-      d->SetValue(5, std::numeric_limits<double>::quiet_NaN());
-      nan->GetPointData()->SetScalars(d);
-      expectError(nan, "NaN");
+      // Three dependent components: VTK's dependent modes are 2 (colour, opacity) and 4 (RGBA).
+      auto three = MakeTestVolume(8);
+      vtkNew<vtkFloatArray> t;
+      t->SetNumberOfComponents(3);
+      t->SetNumberOfTuples(three->GetNumberOfPoints());
+      t->Fill(1.0);
+      three->GetPointData()->SetScalars(t);
+      scene.Volume->GetProperty()->IndependentComponentsOff();
+      expectError(three, "dependent components");
+      scene.Volume->GetProperty()->IndependentComponentsOn();
       auto flat = MakeTestVolume(8);
       flat->SetSpacing(0.1, std::numeric_limits<double>::quiet_NaN(), 0.1);
       expectError(flat, "spacing");

@@ -154,23 +154,11 @@ int main(int, char*[])
   {
     auto vectors = Ball();
     vtkNew<vtkFloatArray> v;
-    v->SetNumberOfComponents(3);
+    v->SetNumberOfComponents(5); // VTK's mappers take 1-4
     v->SetNumberOfTuples(vectors->GetNumberOfPoints());
     v->Fill(1.0);
     vectors->GetPointData()->SetScalars(v);
     expectError(vectors, "components");
-  }
-  {
-    auto nan = Ball();
-    vtkNew<vtkDoubleArray> d;
-    d->SetNumberOfTuples(nan->GetNumberOfPoints());
-    d->Fill(1.0);
-    d->SetValue(77, std::numeric_limits<double>::quiet_NaN());
-    nan->GetPointData()->SetScalars(d);
-    expectError(nan, "NaN");
-    d->SetValue(77, std::numeric_limits<double>::infinity());
-    d->Modified();
-    expectError(nan, "NaN or infinite");
   }
   {
     auto flat = Ball();

@@ -1,5 +1,6 @@
-// Fuzz target: the input translator (vtkAVSSceneTranslator: ToGrid and ToCamera directly, and
-// everything it converts through vtkVolumeReferenceRenderer, the public class that uses it) on
+// Fuzz target: the input translators (vtkAVSDataTranslator::ToVolume and
+// vtkAVSSceneTranslator::ToCamera directly, and everything they convert through
+// vtkVolumeReferenceRenderer, the public class that uses them) on
 // image data built from the input, rendered by the CPU reference at 8 x 8 pixels.
 //
 // The bytes choose the image's geometry (dimensions, extent, spacing, origin, direction
@@ -7,9 +8,10 @@
 // component count, whether scalars exist and match the points, and the values (raw bytes, so
 // NaN and infinities come up); then a transfer function (raw node positions and values), a
 // camera and a render mode. Invariants: the translator succeeds or says why; what it accepts
-// is a finite grid of the image's shape; the renderer reports an error with an empty output for
+// is one finite grid of the image's shape per component (NaN voxels have validity 0); the renderer reports an error with an empty output for
 // what the translator refuses, and otherwise either an error or a picture of finite radiance.
 #include "FuzzInput.h"
+#include "vtkAVSDataTranslator.h"
 #include "vtkAVSSceneTranslator.h"
 #include "vtkAmbientScatteringTable.h"
 #include "vtkVolumeReferenceRenderer.h"
@@ -186,9 +188,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   FuzzInput in(data, size - tail);
   vtkSmartPointer<vtkImageData> image = MakeImage(in);
 
-  avs::Grid grid;
-  std::string error;
-  const bool gridOk = vtkAVSSceneTranslator::ToGrid(image, grid, error);
+  vtkAVSDataTranslator::Volume volume;
+  std::string error, warning;
+  const bool gridOk =
+    vtkAVSDataTranslator::ToVolume(image, vtkAVSDataTranslator::Selection(), volume, error, warning);
   FUZZ_CHECK(gridOk || !error.empty());
   if (verbose)
   {
@@ -199,7 +202,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const double* m = image->GetDirectionMatrix()->GetData();
     std::fprintf(stderr,
       "extent %d %d %d %d %d %d spacing %g %g %g origin %g %g %g direction %g %g %g %g %g %g %g %g "
-      "%g\nToGrid: %s\n",
+      "%g\nToVolume: %s\n",
       e[0],
       e[1],
       e[2],
@@ -227,13 +230,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   {
     int dims[3];
     image->GetDimensions(dims);
-    FUZZ_CHECK(grid.Geometry.Dimensions[0] == dims[0] && grid.Geometry.Dimensions[1] == dims[1] &&
-      grid.Geometry.Dimensions[2] == dims[2]);
-    FUZZ_CHECK(grid.Values.size() == static_cast<std::size_t>(image->GetNumberOfPoints()));
-    for (float v : grid.Values)
+    FUZZ_CHECK(!volume.Components.empty() &&
+      volume.Components.size() <=
+        static_cast<std::size_t>(vtkAVSDataTranslator::MaximumComponents));
+    const auto expected = static_cast<std::size_t>(volume.CellData
+        ? static_cast<vtkIdType>(dims[0] - 1) * (dims[1] - 1) * (dims[2] - 1)
+        : image->GetNumberOfPoints());
+    for (const avs::Grid& grid : volume.Components)
     {
-      FUZZ_CHECK(std::isfinite(v));
+      FUZZ_CHECK(grid.Values.size() == expected);
+      for (float v : grid.Values)
+      {
+        FUZZ_CHECK(std::isfinite(v));
+      }
     }
+    FUZZ_CHECK(volume.Validity.Values.empty() || volume.Validity.Values.size() == expected);
   }
 
   // A transfer function with raw nodes (NaN positions and values included).

@@ -175,6 +175,31 @@ TEST(PathTracer, AlbedoZeroGivesTheAnalyticTransmittance)
   EXPECT_LT(std::exp(-optical), 0.9); // the segment crosses the shell
 }
 
+TEST(PathTracer, CellDataBorderIsPartOfTheVolume)
+{
+  // Cell data: samples at the cell centres, the box half a cell wider on every side; the border
+  // holds the medium of the nearest face, so the cube is L + h thick.
+  const double sigma = 0.15, length = 10.0;
+  VolumeScene scene = Cube(11, length, sigma);
+  scene.Scalars.Geometry.Border = 0.5;
+  const double h = scene.Scalars.Geometry.Spacing.x;
+  const MajorantGrid majorants(scene.Scalars, scene.Transfer, 1.0, 4);
+  const VolumeTracker tracker(scene, majorants);
+  Random rng(3);
+  PathTracerStatistics stats;
+  double sum = 0.0;
+  const int n = 20000;
+  for (int i = 0; i < n; ++i)
+  {
+    // Through the border of the x faces, near the box's edge in y and z too.
+    sum +=
+      tracker.Transmittance({ -5.0, -0.4 * h, length + 0.3 * h }, { 1, 0, 0 }, 30.0, rng, stats);
+  }
+  EXPECT_NEAR(sum / n, std::exp(-sigma * (length + h)), 0.01);
+  EXPECT_EQ(tracker.Extinction({ -0.45 * h, 0.0, 0.0 }), tracker.Extinction({ 0.0, 0.0, 0.0 }));
+  EXPECT_EQ(tracker.Extinction({ -0.55 * h, 0.0, 0.0 }), 0.0);
+}
+
 TEST(PathTracer, WhiteMediumConservesEnergy)
 {
   // A homogeneous cube, albedo 1, white, lit along -z: all light that enters leaves, scattered

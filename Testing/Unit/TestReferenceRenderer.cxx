@@ -73,6 +73,28 @@ TEST(ReferenceRenderer, HomogeneousSlabUnderEmissionAbsorption)
     }
 }
 
+TEST(ReferenceRenderer, CellDataSpansHalfACellBeyondItsSamples)
+{
+  // Cell data (samples at the cell centres, GridGeometry::Border 0.5): the slab is a cell
+  // thicker than its lattice, in every mode, and the light volumes and averaged extinction
+  // (on the lattice) are read clamped in the border.
+  const double alpha = 0.3, u = 2.0, depth = 5.0;
+  VolumeScene scene = Slab(alpha, u, depth, { 1, 1, 1 });
+  scene.Scalars.Geometry.Border = 0.5;
+  scene.Lights = { Light::Directional({ 0, 0, -1 }, { 1, 1, 1 }) };
+  ScatteringParameters p;
+  p.TerminationTransmittance = 0.0;
+  const double sigma = OpacityToExtinction(alpha, u);
+  const double expected = 1.0 - std::exp(-sigma * (depth + depth / 10.0));
+  for (RenderMode mode :
+    { RenderMode::EmissionAbsorption, RenderMode::AmbientOcclusion, RenderMode::AmbientScattering })
+  {
+    const Image image = Render(scene, p, mode, LookingDownZ({ 5, 5, 0 }, 20));
+    EXPECT_NEAR(image.At(4, 4)[3], expected, 1e-6);
+    EXPECT_GT(image.At(4, 4)[0], 0.0);
+  }
+}
+
 TEST(ReferenceRenderer, CameraInsideTheVolumeSeesOnlyWhatIsInFront)
 {
   const double alpha = 0.4, u = 1.0;

@@ -110,10 +110,10 @@ SoakScene::SoakScene()
     ToImage(avs::MakeCloud(24, 5)),
     ToImage(avs::MakeNebula(36, 3), turned) };
   this->Empty = vtkSmartPointer<vtkImageData>::New();
-  this->WithNaN = vtkSmartPointer<vtkImageData>::New();
-  this->WithNaN->DeepCopy(this->Volumes[2]);
-  vtkDataArray* s = this->WithNaN->GetPointData()->GetScalars();
-  s->SetComponent(s->GetNumberOfTuples() / 2, 0, std::numeric_limits<double>::quiet_NaN());
+  // (NaN voxels are valid input, empty space: the bad volume is one without scalars.)
+  this->NoScalars = vtkSmartPointer<vtkImageData>::New();
+  this->NoScalars->DeepCopy(this->Volumes[2]);
+  this->NoScalars->GetPointData()->SetScalars(nullptr);
 
   this->W.resize(2);
   Poses.assign(2, Pose());
@@ -402,7 +402,7 @@ void SoakScene::Change(Window& w, int frame, int which)
     }
     else
     {
-      w.Mapper->SetInputData(bad == Bad::EmptyImage ? this->Empty : this->WithNaN);
+      w.Mapper->SetInputData(bad == Bad::EmptyImage ? this->Empty : this->NoScalars);
     }
     w.Pending = bad;
   }

@@ -1,6 +1,6 @@
 // The soak's scene: two render windows, each with one volume whose mapper, data, transfer
 // function, lights, camera, parameters and size change at random (but validly) from frame to
-// frame, with bad input (an empty image, NaN values, a missing scattering table) at fixed
+// frame, with bad input (an empty image, an image without scalars, a missing scattering table) at fixed
 // frames. Everything random comes from one seeded generator, so a round of frames can be
 // replayed exactly: the soak compares the rounds.
 #ifndef SoakScene_h
@@ -49,7 +49,7 @@ public:
   {
     None,
     EmptyImage,
-    NaNValues,
+    NoScalars,
     MissingTable
   };
 
@@ -104,7 +104,7 @@ private:
 
   std::vector<Window> W;
   std::vector<vtkSmartPointer<vtkImageData>> Volumes; ///< valid: base, larger, smaller, rotated
-  vtkSmartPointer<vtkImageData> Empty, WithNaN;
+  vtkSmartPointer<vtkImageData> Empty, NoScalars;
   std::mt19937_64 Random;
 };
 

@@ -1,0 +1,81 @@
+// Classification (ALGORITHM.md section 1): sigma_t and colour of a volume at a point, from its
+// components, transfer functions, unit distances, weights, gradient opacity, interpolation,
+// NaN voxels and mask (Medium.h). Every CPU renderer classifies through it: the extinction grid
+// (averaged extinction, ambient occlusion), the reference ray caster and the path tracer (and
+// its majorants). The GPU's classification (Rendering/Shaders/avs_classify.glsl) computes the
+// same, so the mappers and the reference agree.
+#ifndef avs_Classifier_h
+#define avs_Classifier_h
+
+#include "Grid.h"
+#include "Medium.h"
+#include "TransferFunction.h"
+
+#include <array>
+#include <vector>
+
+namespace avs
+{
+
+struct VolumeScene;
+
+struct Classified
+{
+  double SigmaT = 0.0;
+  Vec3 Color{ 0, 0, 0 };
+};
+
+class Classifier
+{
+public:
+  /// Reads `scene` (its Scalars, Transfer, UnitDistance and Medium), which must outlive it.
+  explicit Classifier(const VolumeScene& scene);
+
+  /// At a continuous index of the scalars' lattice; (0, black) outside the volume's box.
+  Classified AtIndex(const Vec3& index) const;
+  /// At a point of the scalars' local frame (GridGeometry::WorldToLocal).
+  Classified AtLocal(const Vec3& local) const;
+  /// At a world point.
+  Classified AtWorld(const Vec3& world) const;
+  /// At a lattice point (what the extinction grid holds).
+  Classified AtVoxel(int i, int j, int k) const;
+
+  /// An upper bound of sigma_t anywhere the samples come from the lattice points lo..hi
+  /// (inclusive, per axis): the path tracer's majorant of a cell.
+  double Bound(const std::array<int, 3>& lo, const std::array<int, 3>& hi) const;
+
+  int NumberOfComponents() const { return this->Count; }
+
+  /// The gradient magnitudes of the components at a continuous index, as VTK defines them
+  /// (Medium.h, MediumOptions::GradientOpacity); exposed for the tests.
+  std::array<double, 4> GradientMagnitudes(const Vec3& index) const;
+
+private:
+  // The components at `index` (normalised by the validity) and the validity there; false when
+  // the point is outside the box.
+  bool Sample(const Vec3& index, double s[4], double& valid) const;
+  // The components at `index` clamped into the lattice (the gradient's samples).
+  void SampleClamped(const Vec3& index, double s[4]) const;
+  Classified FromSamples(const Vec3& index, const double s[4], double valid) const;
+
+  const VolumeScene& Scene;
+  const MediumOptions& Medium;
+  int Count = 1;
+  const Grid* Values[4] = {};
+  const TransferFunction* Transfer[4] = {};
+  const TransferFunction* Gradient[4] = {};
+  double UnitDistance[4] = { 1, 1, 1, 1 };
+  double Weight[4] = { 1, 1, 1, 1 };
+  Vec3 GradientScale{ 0.5, 0.5, 0.5 }; // mean spacing / (2 spacing_a)
+  bool AnyGradient = false;
+};
+
+/// Everything sigma_t depends on apart from the grids (opacity tables, ranges, unit distances,
+/// weights, gradient opacity, interpolation, mode, labels' opacities, blend factor), as a list of
+/// numbers: the renderers rebuild their extinction-based volumes when it changes and not for a
+/// change of colour alone.
+std::vector<double> ExtinctionKey(const VolumeScene& scene);
+
+} // namespace avs
+
+#endif

@@ -1,0 +1,86 @@
+/**
+ * @class   vtkAVSClassification
+ * @brief   the GL side of the classification (private): tables, mask, validity, uniforms
+ *
+ * What avs_classify.glsl needs beside the volume texture, for the ray caster and the
+ * averaged-extinction pass alike: its compile-time choices (Layout::Defines), the table rows
+ * (components' colour and opacity, gradient opacities, label functions) as the layers of one
+ * RGBA16F 1D array texture, the mask (nearest) and, for 4 components with NaN voxels, the validity
+ * in a texture of its own; and their uniforms. The CPU twin is Rendering/Core/Classifier.cxx.
+ */
+#ifndef vtkAVSClassification_h
+#define vtkAVSClassification_h
+
+#include "ReferenceRenderer.h"
+
+#include "vtkSmartPointer.h"
+
+#include <string>
+#include <vector>
+
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+class vtkAVSClassification
+{
+public:
+  /// The compile-time choices for a scene, and how the volume texture is laid out.
+  struct Layout
+  {
+    int Components = 1;
+    int Mode = 0;     ///< AVS_MODE
+    int Validity = 0; ///< AVS_VALIDITY: 0 none, 1 channel after the components, 2 own texture
+    int Gradient = 0; ///< AVS_GRADIENT bit mask
+    int Mask = 0;     ///< AVS_MASK
+    bool Nearest = false;
+    /// Channels of the volume texture: the components, and the validity when it is with them.
+    int ScalarChannels() const { return this->Components + (this->Validity == 1 ? 1 : 0); }
+    std::string Defines() const;
+    bool operator==(const Layout& o) const
+    {
+      return this->Components == o.Components && this->Mode == o.Mode &&
+        this->Validity == o.Validity && this->Gradient == o.Gradient && this->Mask == o.Mask &&
+        this->Nearest == o.Nearest;
+    }
+  };
+  static Layout LayoutOf(const avs::VolumeScene& scene);
+
+  /// The volume texture's texels: the components times the validity, then the validity when it
+  /// goes with them (Layout::ScalarChannels channels per voxel).
+  static std::vector<float> PackScalars(const avs::VolumeScene& scene, const Layout& layout);
+
+  void SetWindow(vtkOpenGLRenderWindow* window) { this->Window = window; }
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+  /// The tables and uniforms of `scene` (its functions and geometry), the mask and the separate
+  /// validity where the layout has them.
+  bool Upload(const avs::VolumeScene& scene, std::string& error);
+
+  /// Binds the textures and sets the uniforms on the GL program `program` (current).
+  void Bind(unsigned int program);
+  void Unbind();
+
+  const Layout& GetLayout() const { return this->Current; }
+  /// Whether Upload has run since the last release.
+  bool IsUploaded() const { return this->Transfer != nullptr; }
+
+private:
+  void ReleaseTransfer();
+  vtkOpenGLRenderWindow* Window = nullptr;
+  unsigned int TransferHandle = 0; ///< the 1D array texture's GL name (ours to delete)
+  vtkSmartPointer<vtkTextureObject> Transfer, Mask, Validity;
+  Layout Current;
+  float TransferSize[2] = { 1, 1 };
+  float RowMap[16] = {};  // value -> x texture coordinate per row
+  float RowY[8] = {};     // y texture coordinate per row
+  float ColorMap[6] = {}; // dependent RGBA: value -> [0, 1]
+  float UnitDistance[4] = { 1, 1, 1, 1 };
+  float Weight[4] = { 1, 1, 1, 1 };
+  float GradientScale[3] = { 0.5f, 0.5f, 0.5f };
+  float VoxelStep[3] = { 1, 1, 1 };
+  float MaskBlend = 1.0f;
+  float Labels = 0.0f;
+};
+
+#endif

@@ -1,0 +1,419 @@
+#include "vtkAVSDataTranslator.h"
+
+#include "vtkAbstractMapper.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkMatrix3x3.h"
+#include "vtkPointData.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace
+{
+constexpr double MinimumSpacing = 1e-30;
+constexpr double MaximumCoordinate = 1e30;
+constexpr double MaximumSamplesPerAxis = 1 << 23; // half-spacing samples: 2^24 per axis
+
+template<typename T>
+void CopyComponent(const T* in, vtkIdType n, int components, int c, float* out)
+{
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    out[i] = static_cast<float>(in[i * components + c]);
+  }
+}
+
+const char* ModeName(int mode)
+{
+  switch (mode)
+  {
+    case VTK_SCALAR_MODE_USE_POINT_DATA:
+      return "point scalars";
+    case VTK_SCALAR_MODE_USE_CELL_DATA:
+      return "cell scalars";
+    case VTK_SCALAR_MODE_USE_POINT_FIELD_DATA:
+      return "point data";
+    case VTK_SCALAR_MODE_USE_CELL_FIELD_DATA:
+      return "cell data";
+    default:
+      return "point scalars (nor cell scalars)";
+  }
+}
+} // namespace
+
+vtkDataArray* vtkAVSDataTranslator::Select(vtkImageData* image,
+  const Selection& selection,
+  bool& cellData,
+  std::string& error)
+{
+  cellData = false;
+  if (!image)
+  {
+    error = "no input image data";
+    return nullptr;
+  }
+  if (image->GetNumberOfPoints() < 1)
+  {
+    error = "the input image is empty";
+    return nullptr;
+  }
+  const int mode = selection.ScalarMode;
+  if (mode == VTK_SCALAR_MODE_USE_FIELD_DATA || mode < VTK_SCALAR_MODE_DEFAULT ||
+    mode > VTK_SCALAR_MODE_USE_FIELD_DATA)
+  {
+    error = "unsupported scalar mode " + std::to_string(mode) +
+      " (volumes take point or cell data: default, point data, cell data, point field data, cell "
+      "field data)";
+    return nullptr;
+  }
+  const bool field =
+    mode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA || mode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA;
+  const bool byName = selection.ArrayAccessMode == VTK_GET_ARRAY_BY_NAME;
+  int flag = 0;
+  vtkAbstractArray* array = vtkAbstractMapper::GetAbstractScalars(
+    image, mode, selection.ArrayAccessMode, selection.ArrayId, selection.ArrayName.c_str(), flag);
+  cellData = flag == 1;
+  std::ostringstream os;
+  if (!array)
+  {
+    if (field && byName)
+    {
+      os << "no array named '" << selection.ArrayName << "' in the " << ModeName(mode);
+    }
+    else if (field)
+    {
+      os << "no array with index " << selection.ArrayId << " in the " << ModeName(mode)
+         << " (select one with SelectScalarArray)";
+    }
+    else
+    {
+      os << "the input image has no " << ModeName(mode);
+    }
+    error = os.str();
+    return nullptr;
+  }
+  vtkDataArray* data = vtkDataArray::SafeDownCast(array);
+  if (!data)
+  {
+    os << "the selected array '" << (array->GetName() ? array->GetName() : "") << "' ("
+       << array->GetClassName() << ") is not numeric";
+    error = os.str();
+    return nullptr;
+  }
+  return data;
+}
+
+bool vtkAVSDataTranslator::ToGeometry(vtkImageData* image,
+  bool cellData,
+  avs::GridGeometry& g,
+  std::string& error)
+{
+  int dims[3];
+  image->GetDimensions(dims);
+  double spacing[3], origin[3];
+  image->GetSpacing(spacing);
+  image->GetOrigin(origin);
+  for (int a = 0; a < 3; ++a)
+  {
+    if (!std::isfinite(spacing[a]) || !(spacing[a] > 0.0))
+    {
+      std::ostringstream os;
+      os << "invalid spacing (" << spacing[0] << ", " << spacing[1] << ", " << spacing[2]
+         << "): it must be finite and positive";
+      error = os.str();
+      return false;
+    }
+    if (!std::isfinite(origin[a]))
+    {
+      error = "the image origin is not finite";
+      return false;
+    }
+  }
+  // Geometry the renderers can compute with (the GPU in single precision): spacing within
+  // [1e-30, 1e30], the box within +-1e30, and rays of at most 2^24 samples of half the smallest
+  // spacing (the casts of step counts to int are undefined beyond that, and no ray needs it).
+  {
+    int e[6];
+    image->GetExtent(e);
+    double lo = spacing[0], length = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      lo = std::min(lo, spacing[a]);
+      const double reach = std::max(std::abs(static_cast<double>(e[2 * a])),
+                             std::abs(static_cast<double>(e[2 * a + 1]))) *
+        spacing[a];
+      length = std::max(length, (dims[a] - 1) * spacing[a]);
+      if (!(spacing[a] >= MinimumSpacing && spacing[a] <= MaximumCoordinate) ||
+        !(std::abs(origin[a]) + reach <= MaximumCoordinate))
+      {
+        std::ostringstream os;
+        os << "the image's geometry (spacing " << spacing[0] << ", " << spacing[1] << ", "
+           << spacing[2] << ", origin " << origin[0] << ", " << origin[1] << ", " << origin[2]
+           << ") is outside [1e-30, 1e30]";
+        error = os.str();
+        return false;
+      }
+    }
+    if (!(length / lo <= MaximumSamplesPerAxis))
+    {
+      std::ostringstream os;
+      os << "the image is more than " << MaximumSamplesPerAxis
+         << " times as long as its smallest spacing (spacing " << spacing[0] << ", " << spacing[1]
+         << ", " << spacing[2] << "): rays would take too many samples";
+      error = os.str();
+      return false;
+    }
+  }
+  const double* d = image->GetDirectionMatrix()->GetData();
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      double dot = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        dot += d[3 * k + r] * d[3 * k + c];
+      }
+      if (!std::isfinite(dot) || std::abs(dot - (r == c ? 1.0 : 0.0)) > 1e-6)
+      {
+        error = "the image's direction matrix is not orthonormal";
+        return false;
+      }
+    }
+  }
+  // VTK 9.1 image data has a direction matrix: world = origin + D (ijk * spacing), where ijk
+  // runs over the extent. The core's grid starts at index 0, so its origin is the world
+  // position of the first sample: the extent's first point, or the first cell's centre.
+  int extent[6];
+  image->GetExtent(extent);
+  const double shift = cellData ? 0.5 : 0.0;
+  const double first[3] = { (extent[0] + shift) * spacing[0],
+    (extent[2] + shift) * spacing[1],
+    (extent[4] + shift) * spacing[2] };
+  g = avs::GridGeometry();
+  for (int a = 0; a < 3; ++a)
+  {
+    g.Dimensions[a] = cellData ? dims[a] - 1 : dims[a];
+    g.Spacing[a] = spacing[a];
+  }
+  g.Origin = { origin[0] + d[0] * first[0] + d[1] * first[1] + d[2] * first[2],
+    origin[1] + d[3] * first[0] + d[4] * first[1] + d[5] * first[2],
+    origin[2] + d[6] * first[0] + d[7] * first[1] + d[8] * first[2] };
+  for (int i = 0; i < 9; ++i)
+  {
+    g.Direction[i] = d[i];
+  }
+  g.Border = cellData ? 0.5 : 0.0;
+  return true;
+}
+
+bool vtkAVSDataTranslator::ToVolume(vtkImageData* image,
+  const Selection& selection,
+  Volume& volume,
+  std::string& error,
+  std::string& warning)
+{
+  volume = Volume();
+  warning.clear();
+  if (!image)
+  {
+    error = "no input image data";
+    return false;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  if (dims[0] < 1 || dims[1] < 1 || dims[2] < 1 || image->GetNumberOfPoints() < 1)
+  {
+    error = "the input image is empty";
+    return false;
+  }
+  if (static_cast<double>(dims[0]) * dims[1] * dims[2] > MaximumVoxels)
+  {
+    error = "the input image is too large (more than 2^30 voxels)";
+    return false;
+  }
+  bool cellData = false;
+  vtkDataArray* scalars = Select(image, selection, cellData, error);
+  if (!scalars)
+  {
+    return false;
+  }
+  const int needed = cellData ? 3 : 2; // points per axis: 2 samples (points or cells)
+  if (dims[0] < needed || dims[1] < needed || dims[2] < needed)
+  {
+    std::ostringstream os;
+    os << "the input image is not a volume (dimensions " << dims[0] << " x " << dims[1] << " x "
+       << dims[2] << "; at least 2 " << (cellData ? "cells" : "points") << " per axis are needed)";
+    error = os.str();
+    return false;
+  }
+  const int components = scalars->GetNumberOfComponents();
+  if (components < 1 || components > MaximumComponents)
+  {
+    std::ostringstream os;
+    os << "unsupported number of scalar components: " << components << " (1 to "
+       << MaximumComponents << " are supported)";
+    error = os.str();
+    return false;
+  }
+  const vtkIdType n = cellData ? image->GetNumberOfCells() : image->GetNumberOfPoints();
+  if (scalars->GetNumberOfTuples() != n)
+  {
+    error = cellData ? "the cell scalars do not match the image's number of cells"
+                     : "the point scalars do not match the image's number of points";
+    return false;
+  }
+  avs::GridGeometry geometry;
+  if (!ToGeometry(image, cellData, geometry, error))
+  {
+    return false;
+  }
+  volume.CellData = cellData;
+  volume.Array = scalars;
+  volume.ScalarType = scalars->GetDataType();
+  for (int c = 0; c < components; ++c)
+  {
+    avs::Grid grid(geometry);
+    switch (scalars->GetDataType())
+    {
+      vtkTemplateMacro(CopyComponent(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)),
+        n,
+        components,
+        c,
+        grid.Values.data()));
+      default:
+        for (vtkIdType i = 0; i < n; ++i)
+        {
+          grid.Values[i] = static_cast<float>(scalars->GetComponent(i, c));
+        }
+    }
+    double range[2];
+    scalars->GetFiniteRange(range, c);
+    if (!(range[0] <= range[1]) || !std::isfinite(range[0]) || !std::isfinite(range[1]))
+    {
+      range[0] = range[1] = 0.0; // no finite value at all
+    }
+    volume.Ranges.push_back({ range[0], range[1] });
+    volume.Components.push_back(std::move(grid));
+  }
+  // NaN voxels are empty space: every component 0 and validity 0 there; infinities are clamped
+  // into their component's finite range.
+  std::vector<unsigned char> nan;
+  for (int c = 0; c < components; ++c)
+  {
+    std::vector<float>& values = volume.Components[c].Values;
+    const float lo = static_cast<float>(volume.Ranges[c][0]);
+    const float hi = static_cast<float>(volume.Ranges[c][1]);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const float v = values[i];
+      if (std::isnan(v))
+      {
+        if (nan.empty())
+        {
+          nan.assign(static_cast<std::size_t>(n), 0);
+        }
+        nan[i] = 1;
+      }
+      else if (std::isinf(v))
+      {
+        values[i] = v > 0 ? hi : lo;
+        ++volume.Infinities;
+      }
+    }
+  }
+  if (!nan.empty())
+  {
+    volume.Validity = avs::Grid(geometry, 1.0f);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      if (nan[i])
+      {
+        volume.Validity.Values[i] = 0.0f;
+        for (auto& grid : volume.Components)
+        {
+          grid.Values[i] = 0.0f;
+        }
+        ++volume.NaNVoxels;
+      }
+    }
+  }
+  if (volume.NaNVoxels || volume.Infinities)
+  {
+    std::ostringstream os;
+    os << "the scalars '" << (scalars->GetName() ? scalars->GetName() : "") << "' have ";
+    if (volume.NaNVoxels)
+    {
+      os << volume.NaNVoxels << " of " << n << " " << (cellData ? "cells" : "points")
+         << " with NaN (rendered as empty space)";
+    }
+    if (volume.NaNVoxels && volume.Infinities)
+    {
+      os << " and ";
+    }
+    if (volume.Infinities)
+    {
+      os << volume.Infinities << " infinite values (clamped to the finite range)";
+    }
+    warning = os.str();
+  }
+  return true;
+}
+
+bool vtkAVSDataTranslator::ToMask(vtkImageData* mask,
+  const avs::GridGeometry& volume,
+  avs::Grid& out,
+  std::string& error)
+{
+  out = avs::Grid();
+  bool cellData = false;
+  vtkDataArray* scalars = Select(mask, Selection(), cellData, error);
+  if (!scalars)
+  {
+    error = "the mask: " + error;
+    return false;
+  }
+  int dims[3];
+  mask->GetDimensions(dims);
+  const int shift = cellData ? 1 : 0;
+  const int n[3] = { dims[0] - shift, dims[1] - shift, dims[2] - shift };
+  const auto& v = volume.Dimensions;
+  if (n[0] != v[0] || n[1] != v[1] || n[2] != v[2] ||
+    scalars->GetNumberOfTuples() != static_cast<vtkIdType>(volume.NumberOfPoints()))
+  {
+    std::ostringstream os;
+    os << "the mask's " << (cellData ? "cells" : "points") << " (" << n[0] << " x " << n[1] << " x "
+       << n[2] << ") do not match the volume's samples (" << v[0] << " x " << v[1] << " x " << v[2]
+       << ")";
+    error = os.str();
+    return false;
+  }
+  out = avs::Grid(volume);
+  const vtkIdType count = scalars->GetNumberOfTuples();
+  const int components = scalars->GetNumberOfComponents();
+  switch (scalars->GetDataType())
+  {
+    vtkTemplateMacro(CopyComponent(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)),
+      count,
+      components,
+      0,
+      out.Values.data()));
+    default:
+      for (vtkIdType i = 0; i < count; ++i)
+      {
+        out.Values[i] = static_cast<float>(scalars->GetComponent(i, 0));
+      }
+  }
+  for (float& value : out.Values)
+  {
+    if (std::isnan(value))
+    {
+      value = 0.0f;
+    }
+  }
+  return true;
+}
