@@ -2,8 +2,8 @@
 
 #include "AmbientOcclusion.h"
 #include "AveragedExtinction.h"
-#include "ImageSampleDistance.h"
 #include "Classifier.h"
+#include "ImageSampleDistance.h"
 #include "LightVolume.h"
 #include "ReferenceRenderer.h"
 #include "ScatteringParameters.h"
@@ -697,10 +697,10 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   if (!lit && blend.Mode != vtkVolumeMapper::COMPOSITE_BLEND &&
     in.Scene.Medium.NumberOfComponents() > 1)
   {
-    vtkErrorMacro("Cannot render: the "
-      << vtkAVSShaderOptions::BlendModeName(this->BlendMode)
-      << " blend mode takes one-component data; this volume has "
-      << in.Scene.Medium.NumberOfComponents() << " components (use the composite blend mode)");
+    vtkErrorMacro("Cannot render: the " << vtkAVSShaderOptions::BlendModeName(this->BlendMode)
+                                        << " blend mode takes one-component data; this volume has "
+                                        << in.Scene.Medium.NumberOfComponents()
+                                        << " components (use the composite blend mode)");
     return;
   }
   blend.ScalarRange[0] = in.Scene.Transfer.Minimum;

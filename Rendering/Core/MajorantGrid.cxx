@@ -46,9 +46,9 @@ MajorantGrid::MajorantGrid(const Classifier& classifier,
           std::min(d[1] - 1, (cj + 1) * this->Size),
           std::min(d[2] - 1, (ck + 1) * this->Size) };
         double m = classifier.Bound(lo, hi);
-        const Vec3 low{ static_cast<double>(lo[0]),
-          static_cast<double>(lo[1]),
-          static_cast<double>(lo[2]) };
+        const Vec3 low{
+          static_cast<double>(lo[0]), static_cast<double>(lo[1]), static_cast<double>(lo[2])
+        };
         if (clip && clip->Clips() &&
           clip->BoxOutside(low, low + Vec3{ 1.0, 1.0, 1.0 } * static_cast<double>(this->Size)))
         {

@@ -8,8 +8,8 @@
 #ifndef avs_MajorantGrid_h
 #define avs_MajorantGrid_h
 
-#include "ClipRegion.h"
 #include "Classifier.h"
+#include "ClipRegion.h"
 #include "Grid.h"
 #include "TransferFunction.h"
 

@@ -8,8 +8,9 @@
 // component count, whether scalars exist and match the points, and the values (raw bytes, so
 // NaN and infinities come up); then a transfer function (raw node positions and values), a
 // camera and a render mode. Invariants: the translator succeeds or says why; what it accepts
-// is one finite grid of the image's shape per component (NaN voxels have validity 0); the renderer reports an error with an empty output for
-// what the translator refuses, and otherwise either an error or a picture of finite radiance.
+// is one finite grid of the image's shape per component (NaN voxels have validity 0); the renderer
+// reports an error with an empty output for what the translator refuses, and otherwise either an
+// error or a picture of finite radiance.
 #include "FuzzInput.h"
 #include "vtkAVSDataTranslator.h"
 #include "vtkAVSSceneTranslator.h"
@@ -190,8 +191,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   vtkAVSDataTranslator::Volume volume;
   std::string error, warning;
-  const bool gridOk =
-    vtkAVSDataTranslator::ToVolume(image, vtkAVSDataTranslator::Selection(), volume, error, warning);
+  const bool gridOk = vtkAVSDataTranslator::ToVolume(
+    image, vtkAVSDataTranslator::Selection(), volume, error, warning);
   FUZZ_CHECK(gridOk || !error.empty());
   if (verbose)
   {

@@ -1,7 +1,7 @@
 // The soak's scene: two render windows, each with one volume whose mapper, data, transfer
 // function, lights, camera, parameters and size change at random (but validly) from frame to
-// frame, with bad input (an empty image, an image without scalars, a missing scattering table) at fixed
-// frames. Everything random comes from one seeded generator, so a round of frames can be
+// frame, with bad input (an empty image, an image without scalars, a missing scattering table) at
+// fixed frames. Everything random comes from one seeded generator, so a round of frames can be
 // replayed exactly: the soak compares the rounds.
 #ifndef SoakScene_h
 #define SoakScene_h

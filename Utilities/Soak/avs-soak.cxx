@@ -7,8 +7,8 @@
 // projection), the lights (count, kind: directional, point, spot, headlight, camera light;
 // pose), the transfer function, the mapper's parameters, the mapper kind (a new mapper), the
 // window size and the input (a larger, a smaller and a turned volume), in two windows; bad
-// input at fixed frames (an empty image, an image without scalars, a missing scattering table) must give an
-// error and no frame, and the next valid frame must render again. The frames before each
+// input at fixed frames (an empty image, an image without scalars, a missing scattering table) must
+// give an error and no frame, and the next valid frame must render again. The frames before each
 // checkpoint (every 50) change nothing and must rebuild nothing.
 //
 // The N frames are R rounds of the same N / R frames: the scene is reset (new mappers) and the
