@@ -4,7 +4,8 @@
 // intensity with cropping: PSNR >= 35 dB, while VTK's picture in that mode differs from its
 // composite one (< 33 dB: a mapper ignoring the mode would fail). The ambient-occlusion and
 // ambient-scattering mappers render composite only: any other mode is an error naming it, and
-// nothing is drawn; so is the slice mode for emission-absorption.
+// nothing is drawn; so is the slice mode for emission-absorption, and a mode other than
+// composite on data of two components. A NaN voxel is empty space for the maximum too.
 #include "MapperTestScene.h"
 #include "TestErrorObserver.h"
 
@@ -12,10 +13,12 @@
 #include "vtkAmbientScatteringVolumeMapper.h"
 #include "vtkContourValues.h"
 #include "vtkEmissionAbsorptionVolumeMapper.h"
+#include "vtkFloatArray.h"
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkPNGWriter.h"
 
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -228,6 +231,47 @@ int main(int argc, char* argv[])
       std::string::npos);
     r.Mapper->RemoveObserver(observer);
     r.Mapper->SetBlendModeToComposite();
+  }
+  // The other blend modes take one component: two are an error naming the mode, nothing drawn;
+  // a NaN voxel is empty space and the maximum still renders.
+  {
+    auto two = vtkSmartPointer<vtkImageData>::New();
+    two->DeepCopy(data);
+    vtkDataArray* s = data->GetPointData()->GetScalars();
+    vtkNew<vtkFloatArray> pair;
+    pair->SetName("pair");
+    pair->SetNumberOfComponents(2);
+    pair->SetNumberOfTuples(s->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < s->GetNumberOfTuples(); ++i)
+    {
+      pair->SetComponent(i, 0, s->GetComponent(i, 0));
+      pair->SetComponent(i, 1, s->GetComponent(i, 0));
+    }
+    two->GetPointData()->SetScalars(pair);
+    vtkNew<TestErrorObserver> observer;
+    ours->AddObserver(vtkCommand::ErrorEvent, observer);
+    ours->SetInputData(two);
+    ours->SetBlendModeToMaximumIntensity();
+    auto picture = render(ours, MakeTestProperty());
+    std::cout << "two components, maximum intensity: \"" << observer->LastError << "\"\n";
+    AVS_CHECK(observer->Errors == 1);
+    AVS_CHECK(observer->LastError.find("maximum intensity blend mode takes one-component data") !=
+      std::string::npos);
+    AVS_CHECK(Brightness(picture) == 0.0);
+    auto withNaN = vtkSmartPointer<vtkImageData>::New();
+    withNaN->DeepCopy(data);
+    vtkDataArray* v = withNaN->GetPointData()->GetScalars();
+    v->SetComponent(v->GetNumberOfTuples() / 2, 0, std::numeric_limits<double>::quiet_NaN());
+    ours->SetInputData(withNaN);
+    const double nanBrightness = Brightness(render(ours, MakeTestProperty()));
+    ours->SetInputData(data);
+    const double plain = Brightness(render(ours, MakeTestProperty()));
+    std::cout << "maximum intensity with one NaN voxel: brightness " << nanBrightness << " ("
+              << plain << " without)\n";
+    AVS_CHECK(observer->Errors == 1);
+    AVS_CHECK(nanBrightness > 0.9 * plain && nanBrightness <= 1.01 * plain);
+    ours->RemoveObserver(observer);
+    ours->SetBlendModeToComposite();
   }
   {
     std::ostringstream printed;
