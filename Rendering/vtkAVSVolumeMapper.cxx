@@ -601,20 +601,34 @@ void vtkAVSVolumeMapper::WarnAboutShading(vtkVolumeProperty* property)
   // power) has no meaning for these physically based mappers: EA and AO are never lit by the
   // property's coefficients, ambient scattering is always lit by its scattering model.
   std::string warning;
-  if (property->GetShade())
+  bool shade = false, phong = false;
+  for (int c = 0; c < VTK_MAX_VRCOMP; ++c)
+  {
+    shade = shade || property->GetShade(c);
+    phong = phong ||
+      (property->GetShade(c) &&
+        (property->GetAmbient(c) != 0.1 || property->GetDiffuse(c) != 0.7 ||
+          property->GetSpecular(c) != 0.2 || property->GetSpecularPower(c) != 10.0));
+  }
+  if (shade)
   {
     if (this->GetEffect() != 2)
     {
       warning = "ShadeOn has no effect on " + std::string(this->GetClassName()) +
         ": it does not shade (vtkAmbientScatteringVolumeMapper lights the volume by scattering)";
     }
-    else if (property->GetAmbient() != 0.1 || property->GetDiffuse() != 0.7 ||
-      property->GetSpecular() != 0.2 || property->GetSpecularPower() != 10.0)
+    else if (phong)
     {
       warning = "the property's ambient, diffuse and specular coefficients and specular power are "
                 "not used: ambient scattering lights the volume through its scattering model "
                 "(Albedo, Anisotropy, the renderer's lights)";
     }
+  }
+  if (property->GetUseClippedVoxelIntensity())
+  {
+    warning += std::string(warning.empty() ? "" : "; ") +
+      "UseClippedVoxelIntensity is not used: the gradient at a cut face is the unclipped "
+      "data's (ClippedVoxelIntensity is ignored)";
   }
   if (!warning.empty() && warning != this->ShadingWarning)
   {
@@ -795,7 +809,11 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   // What of vtkVolumeMapper's settings (printed above) this mapper honours.
   const int planes = this->ClippingPlanes ? this->ClippingPlanes->GetNumberOfItems() : 0;
   os << indent << "ClippingPlanes honoured: " << planes << " plane(s), at most "
-     << avs::ClipRegion::MaximumNumberOfPlanes << "\n";
+     << avs::ClipRegion::MaximumNumberOfPlanes
+     << (planes > avs::ClipRegion::MaximumNumberOfPlanes
+            ? " (too many: rendering reports an error, draws nothing)"
+            : "")
+     << "\n";
   os << indent << "Cropping honoured: " << (this->Cropping ? "On" : "Off") << ", flags 0x"
      << std::hex << this->CroppingRegionFlags << std::dec << "\n";
   const bool blendHonoured = this->GetEffect() == 0
@@ -803,7 +821,9 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
     : this->BlendMode == vtkVolumeMapper::COMPOSITE_BLEND;
   os << indent << "BlendMode: " << vtkAVSShaderOptions::BlendModeName(this->BlendMode)
      << (blendHonoured
-            ? " (honoured)"
+            ? (this->BlendMode == vtkVolumeMapper::COMPOSITE_BLEND
+                  ? " (honoured)"
+                  : " (honoured on one-component data; masks: binary only)")
             : " (not honoured by this mapper: rendering reports an error, draws nothing)")
      << "\n";
   os << indent << "NumberOfDataUploads: " << this->NumberOfDataUploads << "\n";

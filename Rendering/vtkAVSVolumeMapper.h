@@ -154,7 +154,7 @@ public:
   /**
    * Jitter the first sample of each ray against wood-grain artefacts. Default on.
    */
-  vtkSetMacro(UseJittering, vtkTypeBool);
+  vtkSetClampMacro(UseJittering, vtkTypeBool, 0, 1);
   vtkGetMacro(UseJittering, vtkTypeBool);
   vtkBooleanMacro(UseJittering, vtkTypeBool);
   ///@}

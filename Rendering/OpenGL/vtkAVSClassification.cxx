@@ -1,6 +1,7 @@
 #include "vtkAVSClassification.h"
 
 #include "vtkAVSRenderPasses.h"
+#include "vtkAVSTextureMemory.h"
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkTextureObject.h"
@@ -15,8 +16,13 @@ bool UploadGrid(vtkOpenGLRenderWindow* window,
   vtkSmartPointer<vtkTextureObject>& texture,
   const avs::Grid& grid,
   bool nearest,
+  const std::vector<vtkTextureObject*>& held,
   std::string& error)
 {
+  if (!vtkAVSTextureMemory::Admit(held, texture, grid.Geometry.Dimensions, 1, 0, error))
+  {
+    return false;
+  }
   if (texture)
   {
     texture->ReleaseGraphicsResources(window);
@@ -147,7 +153,9 @@ void vtkAVSClassification::ReleaseGraphicsResources(vtkWindow* window)
   }
 }
 
-bool vtkAVSClassification::Upload(const avs::VolumeScene& scene, std::string& error)
+bool vtkAVSClassification::Upload(const avs::VolumeScene& scene,
+  const std::vector<vtkTextureObject*>& callerHeld,
+  std::string& error)
 {
   const Layout layout = LayoutOf(scene);
   const avs::MediumOptions& m = scene.Medium;
@@ -263,9 +271,12 @@ bool vtkAVSClassification::Upload(const avs::VolumeScene& scene, std::string& er
   }
   this->MaskBlend = static_cast<float>(std::clamp(m.MaskBlendFactor, 0.0, 1.0));
   this->Labels = static_cast<float>(m.Labels.size());
+  std::vector<vtkTextureObject*> held = callerHeld;
+  held.push_back(this->Mask);
+  held.push_back(this->Validity);
   if (layout.Mask > 0)
   {
-    if (!UploadGrid(this->Window, this->Mask, m.MaskValues, true, error))
+    if (!UploadGrid(this->Window, this->Mask, m.MaskValues, true, held, error))
     {
       return false;
     }
@@ -277,7 +288,9 @@ bool vtkAVSClassification::Upload(const avs::VolumeScene& scene, std::string& er
   }
   if (layout.Validity == 2)
   {
-    if (!UploadGrid(this->Window, this->Validity, m.Validity, layout.Nearest, error))
+    held.back() = this->Validity; // the mask may have been replaced
+    held[held.size() - 2] = this->Mask;
+    if (!UploadGrid(this->Window, this->Validity, m.Validity, layout.Nearest, held, error))
     {
       return false;
     }

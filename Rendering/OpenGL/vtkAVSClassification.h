@@ -14,6 +14,7 @@
 #include "ReferenceRenderer.h"
 
 #include "vtkSmartPointer.h"
+#include "vtkTextureObject.h" // for the textures VolumeTextures returns
 
 #include <string>
 #include <vector>
@@ -54,8 +55,18 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
   /// The tables and uniforms of `scene` (its functions and geometry), the mask and the separate
-  /// validity where the layout has them.
-  bool Upload(const avs::VolumeScene& scene, std::string& error);
+  /// validity where the layout has them; those two go into the GPU memory budget
+  /// (vtkAVSTextureMemory) beside `held`, the caller's volume textures.
+  bool Upload(const avs::VolumeScene& scene,
+    const std::vector<vtkTextureObject*>& held,
+    std::string& error);
+
+  /// The 3D textures it holds (the mask and the separate validity; null where there is none),
+  /// for the GPU memory budget.
+  std::vector<vtkTextureObject*> VolumeTextures() const
+  {
+    return { this->Mask.Get(), this->Validity.Get() };
+  }
 
   /// Binds the textures and sets the uniforms on the GL program `program` (current).
   void Bind(unsigned int program);

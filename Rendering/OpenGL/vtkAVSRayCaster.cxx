@@ -278,20 +278,8 @@ bool vtkAVSRayCaster::UploadScalarGrid(vtkSmartPointer<vtkTextureObject>& textur
     return false;
   }
   // The budget of AVS_GPU_MEMORY_LIMIT_MB (vtkAVSTextureMemory.h), before anything is allocated.
-  if (!vtkAVSTextureMemory::Admit({ this->Scalars,
-                                    this->ScalarsAveraged,
-                                    this->AveragedExtinction,
-                                    this->Occlusion,
-                                    this->LightVolumes[0],
-                                    this->LightVolumes[1],
-                                    this->Scratch[0],
-                                    this->Scratch[1],
-                                    this->Scratch[2] },
-        texture,
-        d,
-        components,
-        internalFormat,
-        error))
+  if (!vtkAVSTextureMemory::Admit(
+        this->VolumeTextures(), texture, d, components, internalFormat, error))
   {
     return false;
   }
@@ -359,7 +347,27 @@ bool vtkAVSRayCaster::UploadScalars(const avs::VolumeScene& scene, std::string& 
 bool vtkAVSRayCaster::UploadClassification(const avs::VolumeScene& scene, std::string& error)
 {
   this->Classification.SetWindow(this->Window);
-  return this->Classification.Upload(scene, error);
+  std::vector<vtkTextureObject*> held = this->VolumeTextures();
+  held.resize(held.size() - this->Classification.VolumeTextures().size()); // counted by it
+  return this->Classification.Upload(scene, held, error);
+}
+
+std::vector<vtkTextureObject*> vtkAVSRayCaster::VolumeTextures() const
+{
+  std::vector<vtkTextureObject*> held = { this->Scalars,
+    this->ScalarsAveraged,
+    this->AveragedExtinction,
+    this->Occlusion,
+    this->LightVolumes[0],
+    this->LightVolumes[1],
+    this->Scratch[0],
+    this->Scratch[1],
+    this->Scratch[2] };
+  for (vtkTextureObject* t : this->Classification.VolumeTextures())
+  {
+    held.push_back(t); // last: UploadClassification leaves them to the classification
+  }
+  return held;
 }
 
 int vtkAVSRayCaster::AveragedChannelFor(const vtkAVSClassification::Layout& layout)

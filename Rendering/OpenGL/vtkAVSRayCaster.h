@@ -174,6 +174,8 @@ private:
   /// texture of the same depth format (multisampled framebuffers are resolved).
   void CaptureDepth(int x, int y, int width, int height);
   unsigned int BuildComputeProgram(const char* source, const char* what);
+  /// Every 3D texture held for the volume (the GPU memory budget counts them).
+  std::vector<vtkTextureObject*> VolumeTextures() const;
   /// The averaged-extinction program for these defines (rebuilt when they change).
   unsigned int BuildAverageProgram(const std::string& defines);
 

@@ -76,9 +76,10 @@ vec4 EffectOutput(vec3 L, float T)
   g_isoIndex = -1;
 #endif
 //AVS::Effect::Sample
-    // One component (the mapper refuses more); NaN voxels (validity 0) are skipped.
+    // One component (the mapper refuses more); NaN voxels (validity 0) and samples a binary
+    // mask removes are skipped, as VTK skips them.
     float valid = Validity(voxel, coordinate);
-    if (AVS_KEPT(index) && valid > 0.0)
+    if (AVS_KEPT(index) && valid > 0.0 && MaskKeeps(coordinate))
     {
       float s = Components(voxel, valid).x;
 #if AVS_BLEND == 1

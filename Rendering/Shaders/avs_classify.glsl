@@ -108,6 +108,17 @@ float ComponentExtinction(int c, float alpha, vec4 gradient)
   return sigma;
 }
 
+// Whether a binary mask keeps the sample at `coordinate` (true without one, and for label maps,
+// which the blend modes other than composite do not use).
+bool MaskKeeps(vec3 coordinate)
+{
+#if AVS_MASK == 1
+  return textureLod(u_mask, coordinate, 0.0).r > 0.0;
+#else
+  return true;
+#endif
+}
+
 // (colour, sigma_t) of the value s of a single component through its own tables alone (no
 // gradient opacity, validity or mask): the blend modes other than composite classify the
 // extreme or crossed value this way, as vtkGPUVolumeRayCastMapper does.

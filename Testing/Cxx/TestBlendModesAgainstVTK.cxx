@@ -16,6 +16,7 @@
 #include "vtkFloatArray.h"
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkPNGWriter.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <iostream>
 #include <limits>
@@ -273,11 +274,56 @@ int main(int argc, char* argv[])
     ours->RemoveObserver(observer);
     ours->SetBlendModeToComposite();
   }
+  // A binary mask removes samples in the maximum intensity: the half x < -0.025 of the volume
+  // masked away gives the picture of the data with that half at the range's minimum (where
+  // the maximum starts), up to the interpolation at the cut. (VTK 9.1's masked maximum is not
+  // that picture: 23.5 dB from ours, a patch of the volume's centre; README, settings table.)
+  {
+    auto mask = vtkSmartPointer<vtkImageData>::New();
+    mask->DeepCopy(data);
+    auto cut = vtkSmartPointer<vtkImageData>::New();
+    cut->DeepCopy(data);
+    vtkDataArray* values = cut->GetPointData()->GetScalars();
+    double range[2];
+    values->GetRange(range);
+    vtkNew<vtkUnsignedCharArray> bytes;
+    bytes->SetNumberOfTuples(values->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+    {
+      double x[3];
+      cut->GetPoint(i, x);
+      const bool kept = x[0] >= -0.025;
+      bytes->SetValue(i, kept ? 255 : 0);
+      if (!kept)
+      {
+        values->SetComponent(i, 0, range[0]);
+      }
+    }
+    mask->GetPointData()->SetScalars(bytes);
+    ours->SetBlendModeToMaximumIntensity();
+    ours->SetInputData(data);
+    ours->SetMaskInput(mask);
+    ours->SetMaskTypeToBinary();
+    auto masked = render(ours, MakeTestProperty());
+    ours->SetMaskInput(nullptr);
+    auto unmasked = render(ours, MakeTestProperty());
+    ours->SetInputData(cut);
+    auto expected = render(ours, MakeTestProperty());
+    ours->SetInputData(data);
+    const double psnr = Psnr(masked, expected);
+    std::cout << "maximum intensity with a binary mask: PSNR " << psnr
+              << " dB against the data cut at the mask; brightness " << Brightness(masked) << " ("
+              << Brightness(unmasked) << " without the mask)\n";
+    AVS_CHECK(psnr >= 35.0);
+    AVS_CHECK(Brightness(masked) < 0.9 * Brightness(unmasked));
+    ours->SetBlendModeToComposite();
+  }
   {
     std::ostringstream printed;
     ours->SetBlendModeToMaximumIntensity();
     ours->Print(printed);
-    AVS_CHECK(printed.str().find("BlendMode: maximum intensity (honoured)") != std::string::npos);
+    AVS_CHECK(printed.str().find("BlendMode: maximum intensity (honoured on one-component data") !=
+      std::string::npos);
     AVS_CHECK(printed.str().find("ClippingPlanes honoured") != std::string::npos);
     ours->SetBlendModeToComposite();
   }

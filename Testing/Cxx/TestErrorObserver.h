@@ -21,16 +21,19 @@ public:
     else if (event == vtkCommand::WarningEvent)
     {
       ++this->Warnings;
+      this->LastWarning = text;
     }
   }
   void Clear()
   {
     this->Errors = this->Warnings = 0;
     this->LastError.clear();
+    this->LastWarning.clear();
   }
   int Errors = 0;
   int Warnings = 0;
   std::string LastError;
+  std::string LastWarning;
 };
 
 #define AVS_CHECK(condition)                                                                       \

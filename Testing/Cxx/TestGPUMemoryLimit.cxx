@@ -6,7 +6,8 @@
 // For each mapper, with a limit of 6 MiB: a 128^3 volume (8 MiB of scalars: refused at the
 // first texture), a 100^3 volume (4 MiB of scalars fit, its second texture does not, for the
 // ambient-occlusion and ambient-scattering mappers; emission-absorption fits it), then a 32^3
-// volume, which must render. The window's GL objects are counted by name after each frame.
+// volume, which must render. The mask counts too: EA's 100^3 volume with a mask of its size is
+// refused. The window's GL objects are counted by name after each frame.
 #include "MapperTestScene.h"
 #include "SoakCensus.h"
 #include "TestErrorObserver.h"
@@ -125,6 +126,23 @@ int main(int, char*[])
         errors->Errors - before,
         mapper->GetNumberOfRenderedFrames(),
         after.ToString().c_str());
+    }
+    if (kind == 0)
+    {
+      // The 100^3 volume fits EA alone; with a mask (another 4 MiB texture) it does not.
+      const int before = errors->Errors;
+      mapper->SetInputData(middle);
+      mapper->SetMaskInput(middle);
+      window->Render();
+      const GLCensus after = CountGLObjects(window);
+      Check(errors->Errors == before + 1,
+        "EA, 100^3 with a mask: one error, got " + std::to_string(errors->Errors - before));
+      Check(errors->LastError.find("AVS_GPU_MEMORY_LIMIT_MB") != std::string::npos,
+        "EA, 100^3 with a mask: the error says what is wrong: " + errors->LastError);
+      Check(after.Textures <= empty.Textures, "EA, 100^3 with a mask: its textures released");
+      std::printf(
+        "EA 100^3 with a mask: %d errors, %s\n", errors->Errors - before, after.ToString().c_str());
+      mapper->SetMaskInput(nullptr);
     }
     const int before = errors->Errors, frames = mapper->GetNumberOfRenderedFrames();
     mapper->SetInputData(small);

@@ -194,6 +194,20 @@ int main(int argc, char* argv[])
       AVS_CHECK(Psnr(unshaded, withPhong) > 80.0);
       AVS_CHECK(afterShade == (m < 2 ? 1 : 0)); // AS is lit anyway: ShadeOn is not misleading
       AVS_CHECK(afterPhong == 1);
+      // A second component's flags are read too; UseClippedVoxelIntensity is not used: a
+      // warning each.
+      auto second = CopyProperty(plain);
+      second->ShadeOn(1);
+      second->SetSpecular(1, 0.8);
+      RenderVolume(window, renderer, mapper, plain);
+      const int beforeSecond = messages->Warnings;
+      RenderVolume(window, renderer, mapper, second);
+      AVS_CHECK(messages->Warnings == beforeSecond + 1);
+      auto clipped = CopyProperty(plain);
+      clipped->UseClippedVoxelIntensityOn();
+      RenderVolume(window, renderer, mapper, clipped);
+      AVS_CHECK(messages->Warnings == beforeSecond + 2);
+      AVS_CHECK(messages->LastWarning.find("UseClippedVoxelIntensity") != std::string::npos);
     }
   }
   if (failures)
