@@ -117,19 +117,18 @@ int vtkAmbientScatteringRepresentation::GetLightVolumeMaximumDimension()
 void vtkAmbientScatteringRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  static const char* const names[] = { "EmissionAbsorption", "AmbientOcclusion",
-    "AmbientScattering" };
+  static const char* const names[] = {
+    "EmissionAbsorption", "AmbientOcclusion", "AmbientScattering"
+  };
   os << indent << "LightingModel: " << names[this->LightingModel] << "\n";
   os << indent << "Albedo: " << this->GetAlbedo() << "\n";
   os << indent << "ScatteringAnisotropy: " << this->GetScatteringAnisotropy() << "\n";
   os << indent << "AmbientRadius: " << this->GetAmbientRadius() << "\n";
   os << indent << "LightScale: " << this->GetLightScale() << "\n";
   os << indent << "EmissionWeight: " << this->GetEmissionWeight() << "\n";
-  os << indent << "LightVolumeMaximumDimension: " << this->GetLightVolumeMaximumDimension()
-     << "\n";
+  os << indent << "LightVolumeMaximumDimension: " << this->GetLightVolumeMaximumDimension() << "\n";
   os << indent << "EmissionAbsorptionMapper: " << this->EmissionAbsorptionMapper.GetPointer()
      << "\n";
   os << indent << "AmbientOcclusionMapper: " << this->AmbientOcclusionMapper.GetPointer() << "\n";
-  os << indent << "AmbientScatteringMapper: " << this->AmbientScatteringMapper.GetPointer()
-     << "\n";
+  os << indent << "AmbientScatteringMapper: " << this->AmbientScatteringMapper.GetPointer() << "\n";
 }

@@ -7,8 +7,9 @@
  * colour map and opacity function of the vtkVolumeProperty, scalar array selection, cropping,
  * blend mode) with the volume mapper replaced by one of the project's three, chosen by
  * LightingModel: vtkEmissionAbsorptionVolumeMapper, vtkAmbientOcclusionVolumeMapper or
- * vtkAmbientScatteringVolumeMapper (the default). The mappers read the renderer's lights (ParaView's
- * light kit, headlight and the lights of the Lights panel) and camera as in any VTK renderer.
+ * vtkAmbientScatteringVolumeMapper (the default). The mappers read the renderer's lights
+ * (ParaView's light kit, headlight and the lights of the Lights panel) and camera as in any VTK
+ * renderer.
  *
  * The medium parameters are forwarded to the mappers that have them: Albedo and
  * ScatteringAnisotropy to ambient scattering; AmbientRadius, EmissionWeight, LightScale and
@@ -19,7 +20,7 @@
 #define vtkAmbientScatteringRepresentation_h
 
 #include "vtkImageVolumeRepresentation.h"
-#include "vtkNew.h"                        // for vtkNew
+#include "vtkNew.h"                       // for vtkNew
 #include "vtkPVAmbientScatteringModule.h" // for export macro
 
 class vtkAmbientOcclusionVolumeMapper;
