@@ -114,6 +114,39 @@ int vtkAmbientScatteringRepresentation::GetLightVolumeMaximumDimension()
   return this->AmbientScatteringMapper->GetLightVolumeMaximumDimension();
 }
 
+void vtkAmbientScatteringRepresentation::SetSampleDistance(double distance)
+{
+  for (vtkAVSVolumeMapper* m : this->Mappers())
+  {
+    m->SetSampleDistance(distance);
+  }
+}
+
+double vtkAmbientScatteringRepresentation::GetSampleDistance()
+{
+  return this->AmbientScatteringMapper->GetSampleDistance();
+}
+
+void vtkAmbientScatteringRepresentation::SetUseJittering(int jitter)
+{
+  for (vtkAVSVolumeMapper* m : this->Mappers())
+  {
+    m->SetUseJittering(jitter);
+  }
+}
+
+int vtkAmbientScatteringRepresentation::GetUseJittering()
+{
+  return this->AmbientScatteringMapper->GetUseJittering();
+}
+
+std::array<vtkAVSVolumeMapper*, 3> vtkAmbientScatteringRepresentation::Mappers()
+{
+  return { this->EmissionAbsorptionMapper.GetPointer(),
+    this->AmbientOcclusionMapper.GetPointer(),
+    this->AmbientScatteringMapper.GetPointer() };
+}
+
 void vtkAmbientScatteringRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -127,6 +160,8 @@ void vtkAmbientScatteringRepresentation::PrintSelf(ostream& os, vtkIndent indent
   os << indent << "LightScale: " << this->GetLightScale() << "\n";
   os << indent << "EmissionWeight: " << this->GetEmissionWeight() << "\n";
   os << indent << "LightVolumeMaximumDimension: " << this->GetLightVolumeMaximumDimension() << "\n";
+  os << indent << "SampleDistance: " << this->GetSampleDistance() << "\n";
+  os << indent << "UseJittering: " << this->GetUseJittering() << "\n";
   os << indent << "EmissionAbsorptionMapper: " << this->EmissionAbsorptionMapper.GetPointer()
      << "\n";
   os << indent << "AmbientOcclusionMapper: " << this->AmbientOcclusionMapper.GetPointer() << "\n";

@@ -23,6 +23,9 @@
 #include "vtkNew.h"                       // for vtkNew
 #include "vtkPVAmbientScatteringModule.h" // for export macro
 
+#include <array> // for std::array
+
+class vtkAVSVolumeMapper;
 class vtkAmbientOcclusionVolumeMapper;
 class vtkAmbientScatteringVolumeMapper;
 class vtkEmissionAbsorptionVolumeMapper;
@@ -106,6 +109,24 @@ public:
   int GetLightVolumeMaximumDimension();
   ///@}
 
+  ///@{
+  /**
+   * Ray-marching step in data units for the three mappers. Default 0: half the smallest voxel
+   * spacing.
+   */
+  void SetSampleDistance(double distance);
+  double GetSampleDistance();
+  ///@}
+
+  ///@{
+  /**
+   * Jitter the rays' start (hides wood-grain artefacts; off gives the same picture at each
+   * render). Default on.
+   */
+  void SetUseJittering(int jitter);
+  int GetUseJittering();
+  ///@}
+
   /**
    * The mapper of the current lighting model.
    */
@@ -114,6 +135,8 @@ public:
 protected:
   vtkAmbientScatteringRepresentation();
   ~vtkAmbientScatteringRepresentation() override;
+
+  std::array<vtkAVSVolumeMapper*, 3> Mappers();
 
   int LightingModel = AmbientScattering;
   vtkNew<vtkEmissionAbsorptionVolumeMapper> EmissionAbsorptionMapper;
