@@ -47,6 +47,7 @@
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+#include "vtkXMLImageDataWriter.h"
 
 #include <algorithm>
 #include <chrono>
@@ -293,23 +294,32 @@ int main(int argc, char* argv[])
 {
   int voxels = 256, size = 512, frames = 10, lightGrid = 0;
   bool interactionOnly = false, clipping = false, clipNothing = false;
+  std::string writeScene;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h")
     {
-      std::printf("Usage: avs-bench-mappers [--voxels N] [--size N] [--frames N] [--light-grid N] "
-                  "[--interaction-only] [--clipping | --clipping-nothing]\n\n"
-                  "Median frame times of VTK's vtkGPUVolumeRayCastMapper and of the module's "
-                  "mappers on the built-in nebula\n(N^3 voxels, default 256), N x N pixels "
-                  "(default 512), over N frames (default 10), and their ratios;\nthen interactive "
-                  "frames (desired update rate 15) with a headlight and with a light kit.\n"
-                  "--light-grid sets the ambient-scattering mappers' LightVolumeMaximumDimension "
-                  "(default: the mappers' own default).\n"
-                  "--interaction-only runs the interaction scenario alone.\n"
-                  "--clipping: three clipping planes and cropping (fence) on every mapper;\n"
-                  "--clipping-nothing: planes outside the volume, every cropping region kept.\n");
+      std::printf(
+        "Usage: avs-bench-mappers [--voxels N] [--size N] [--frames N] [--light-grid N] "
+        "[--interaction-only] [--clipping | --clipping-nothing] [--write-scene FILE.vti]\n\n"
+        "Median frame times of VTK's vtkGPUVolumeRayCastMapper and of the module's "
+        "mappers on the built-in nebula\n(N^3 voxels, default 256), N x N pixels "
+        "(default 512), over N frames (default 10), and their ratios;\nthen interactive "
+        "frames (desired update rate 15) with a headlight and with a light kit.\n"
+        "--light-grid sets the ambient-scattering mappers' LightVolumeMaximumDimension "
+        "(default: the mappers' own default).\n"
+        "--interaction-only runs the interaction scenario alone.\n"
+        "--clipping: three clipping planes and cropping (fence) on every mapper;\n"
+        "--clipping-nothing: planes outside the volume, every cropping region kept.\n"
+        "--write-scene FILE.vti: write the nebula (for ParaView's peer, "
+        "Utilities/ParaView) and stop.\n");
       return 0;
+    }
+    if (arg == "--write-scene" && i + 1 < argc)
+    {
+      writeScene = argv[++i];
+      continue;
     }
     if (arg == "--interaction-only")
     {
@@ -348,6 +358,22 @@ int main(int argc, char* argv[])
   values->SetNumberOfTuples(static_cast<vtkIdType>(nebula.Values.size()));
   std::copy(nebula.Values.begin(), nebula.Values.end(), values->GetPointer(0));
   b.Volume->GetPointData()->SetScalars(values);
+  if (!writeScene.empty())
+  {
+    // The same volume for the ParaView peer (Utilities/ParaView/avs-bench-paraview.py), which
+    // sets the transfer functions, lights, sample distance and image size below itself.
+    values->SetName("density");
+    vtkNew<vtkXMLImageDataWriter> writer;
+    writer->SetFileName(writeScene.c_str());
+    writer->SetInputData(b.Volume);
+    if (!writer->Write())
+    {
+      std::fprintf(stderr, "avs-bench-mappers: cannot write %s\n", writeScene.c_str());
+      return 1;
+    }
+    std::printf("# scene: nebula %d^3 written to %s\n", voxels, writeScene.c_str());
+    return 0;
+  }
 
   vtkNew<vtkColorTransferFunction> color;
   color->AddRGBPoint(0.0, 0.25, 0.35, 0.9);

@@ -84,7 +84,7 @@ struct vtkOpenVDBImageReader::Internals
 {
   std::vector<GridInfo> Grids;
   std::string ListedFile;
-  openvdb::GridBase::Ptr Grid; ///< the selected grid, read in full
+  openvdb::GridBase::Ptr Grid; ///< the selected grid, read in full (released after the copy)
   std::string GridKey;         ///< file + grid + options it was read with
   Layout Out;
   std::string Error;
@@ -551,6 +551,12 @@ int vtkOpenVDBImageReader::RequestData(vtkInformation*,
   auto& in = *this->Internal;
   vtkImageData* output = vtkImageData::GetData(outputVector);
   output->Initialize();
+  if (!in.Grid && in.Error.empty())
+  {
+    // Executed again without RequestInformation (a new update request): the grid was released
+    // after the last copy, so it is read again.
+    this->RequestInformation(nullptr, nullptr, outputVector);
+  }
   if (!in.Grid)
   {
     return 1; // RequestInformation reported why
@@ -695,6 +701,10 @@ int vtkOpenVDBImageReader::RequestData(vtkInformation*,
     output->Initialize();
     vtkErrorMacro("Cannot read '" << this->FileName << "': grid '" << in.GridKey << "'.");
   }
+  // The sparse grid goes once it is copied: the output holds the voxels, and a grid kept until
+  // the reader's destruction can outlive OpenVDB's TBB allocator where the reader is destroyed
+  // at process exit (ParaView's pvbatch destroys its proxies after the static destructors ran).
+  in.Grid.reset();
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -224,6 +224,14 @@ bool vtkAVSClassification::Upload(const avs::VolumeScene& scene,
     GL_RGBA,
     GL_FLOAT,
     rgba.data());
+  // Sampling parameters set here, once: vtkTextureObject does not know 1D array textures (its
+  // IsBound, which its automatic parameter upload asserts, has no case for them; ParaView's VTK
+  // is built with assertions on), so its automatic parameters stay off for this texture.
+  glTexParameteri(GL_TEXTURE_1D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_1D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_1D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_1D_ARRAY, GL_TEXTURE_BASE_LEVEL, 0);
+  glTexParameteri(GL_TEXTURE_1D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
   glBindTexture(GL_TEXTURE_1D_ARRAY, 0);
   if (glGetError() != GL_NO_ERROR)
   {
@@ -235,10 +243,7 @@ bool vtkAVSClassification::Upload(const avs::VolumeScene& scene,
   this->Transfer = vtkSmartPointer<vtkTextureObject>::New();
   this->Transfer->SetContext(this->Window);
   this->Transfer->AssignToExistingTexture(handle, GL_TEXTURE_1D_ARRAY);
-  this->Transfer->SetWrapS(vtkTextureObject::ClampToEdge);
-  this->Transfer->SetWrapT(vtkTextureObject::ClampToEdge);
-  this->Transfer->SetMinificationFilter(vtkTextureObject::Linear);
-  this->Transfer->SetMagnificationFilter(vtkTextureObject::Linear);
+  this->Transfer->SetAutoParameters(0);
   this->TransferSize[0] = static_cast<float>(width);
   this->TransferSize[1] = static_cast<float>(rows.size());
   // Texel centres on the nodes: [0, 1] -> [0.5 / N, 1 - 0.5 / N]; beyond, the texture clamps.

@@ -109,6 +109,33 @@ TEST_F(OpenVDBReader, FogSphereWithKnownValuesTranslationAndScale)
   EXPECT_STREQ(r.R->GetGridName(0), "density");
 }
 
+// The reader releases the sparse grid after the copy; a new execution without
+// RequestInformation (here: the output's data released) reads it again, to the same values.
+TEST_F(OpenVDBReader, ExecutesAgainAfterTheGridWasReleased)
+{
+  auto grid = openvdb::FloatGrid::create(0.0f);
+  grid->setName("density");
+  auto acc = grid->getAccessor();
+  for (int k = 0; k < 6; ++k)
+    for (int j = 0; j < 5; ++j)
+      for (int i = 0; i < 4; ++i)
+        acc.setValue(openvdb::Coord(i, j, k), 0.5f + 0.1f * i + 0.01f * j + 0.001f * k);
+  Write(Path("again.vdb"), { grid });
+
+  Reader r(Path("again.vdb"));
+  vtkImageData* out = r.Read();
+  ASSERT_EQ(r.Errors->Errors, 0);
+  ASSERT_EQ(out->GetNumberOfPoints(), 4 * 5 * 6);
+  const double before = r.At(3, 2, 5);
+  out->ReleaseData(); // the next update runs RequestData alone (the reader is not modified)
+  ASSERT_EQ(out->GetNumberOfPoints(), 0);
+  out = r.Read();
+  EXPECT_EQ(r.Errors->Errors, 0);
+  ASSERT_EQ(out->GetNumberOfPoints(), 4 * 5 * 6);
+  EXPECT_FLOAT_EQ(r.At(3, 2, 5), before);
+  EXPECT_FLOAT_EQ(r.At(3, 2, 5), 0.5f + 0.3f + 0.02f + 0.005f);
+}
+
 TEST_F(OpenVDBReader, LevelSetAsDistanceOrFogVolume)
 {
   auto sphere = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(

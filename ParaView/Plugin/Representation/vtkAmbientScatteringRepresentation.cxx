@@ -1,0 +1,169 @@
+#include "vtkAmbientScatteringRepresentation.h"
+
+#include "vtkAmbientOcclusionVolumeMapper.h"
+#include "vtkAmbientScatteringVolumeMapper.h"
+#include "vtkEmissionAbsorptionVolumeMapper.h"
+#include "vtkObjectFactory.h"
+
+vtkStandardNewMacro(vtkAmbientScatteringRepresentation);
+
+vtkAmbientScatteringRepresentation::vtkAmbientScatteringRepresentation()
+{
+  // The superclass made a vtkMultiBlockVolumeMapper; ours takes its place (it gets the input and
+  // the scalar selection at each render, in ProcessViewRequest and UpdateMapperParameters).
+  this->VolumeMapper = this->AmbientScatteringMapper.GetPointer();
+}
+
+vtkAmbientScatteringRepresentation::~vtkAmbientScatteringRepresentation() = default;
+
+void vtkAmbientScatteringRepresentation::SetLightingModel(int model)
+{
+  if (model < EmissionAbsorption || model > AmbientScattering)
+  {
+    vtkErrorMacro("LightingModel " << model
+                                   << " is none of EmissionAbsorption (0), AmbientOcclusion (1) "
+                                      "and AmbientScattering (2); it stays "
+                                   << this->LightingModel);
+    return;
+  }
+  if (model == this->LightingModel)
+  {
+    return;
+  }
+  vtkVolumeMapper* next = model == EmissionAbsorption
+    ? static_cast<vtkVolumeMapper*>(this->EmissionAbsorptionMapper)
+    : model == AmbientOcclusion ? static_cast<vtkVolumeMapper*>(this->AmbientOcclusionMapper)
+                                : static_cast<vtkVolumeMapper*>(this->AmbientScatteringMapper);
+  vtkVolumeMapper* previous = this->VolumeMapper;
+  next->SetCropping(previous->GetCropping());
+  next->SetCroppingRegionFlags(previous->GetCroppingRegionFlags());
+  next->SetBlendMode(previous->GetBlendMode());
+  next->SetInputConnection(previous->GetInputConnection(0, 0));
+  previous->RemoveAllInputConnections(0);
+  this->VolumeMapper = next;
+  this->LightingModel = model;
+  this->Modified();
+}
+
+vtkVolumeMapper* vtkAmbientScatteringRepresentation::GetActiveVolumeMapper()
+{
+  return this->VolumeMapper;
+}
+
+void vtkAmbientScatteringRepresentation::SetAlbedo(double albedo)
+{
+  this->AmbientScatteringMapper->SetAlbedo(albedo);
+}
+
+double vtkAmbientScatteringRepresentation::GetAlbedo()
+{
+  return this->AmbientScatteringMapper->GetAlbedo();
+}
+
+void vtkAmbientScatteringRepresentation::SetScatteringAnisotropy(double g)
+{
+  this->AmbientScatteringMapper->SetAnisotropy(g);
+}
+
+double vtkAmbientScatteringRepresentation::GetScatteringAnisotropy()
+{
+  return this->AmbientScatteringMapper->GetAnisotropy();
+}
+
+void vtkAmbientScatteringRepresentation::SetAmbientRadius(double radius)
+{
+  this->AmbientScatteringMapper->SetAmbientRadius(radius);
+  this->AmbientOcclusionMapper->SetOcclusionRadius(radius);
+}
+
+double vtkAmbientScatteringRepresentation::GetAmbientRadius()
+{
+  return this->AmbientScatteringMapper->GetAmbientRadius();
+}
+
+void vtkAmbientScatteringRepresentation::SetLightScale(double scale)
+{
+  this->AmbientScatteringMapper->SetLightScale(scale);
+  this->AmbientOcclusionMapper->SetLightScale(scale);
+}
+
+double vtkAmbientScatteringRepresentation::GetLightScale()
+{
+  return this->AmbientScatteringMapper->GetLightScale();
+}
+
+void vtkAmbientScatteringRepresentation::SetEmissionWeight(double weight)
+{
+  this->AmbientScatteringMapper->SetEmissionWeight(weight);
+  this->AmbientOcclusionMapper->SetEmissionWeight(weight);
+}
+
+double vtkAmbientScatteringRepresentation::GetEmissionWeight()
+{
+  return this->AmbientScatteringMapper->GetEmissionWeight();
+}
+
+void vtkAmbientScatteringRepresentation::SetLightVolumeMaximumDimension(int dimension)
+{
+  this->AmbientScatteringMapper->SetLightVolumeMaximumDimension(dimension);
+  this->AmbientOcclusionMapper->SetOcclusionVolumeMaximumDimension(dimension);
+}
+
+int vtkAmbientScatteringRepresentation::GetLightVolumeMaximumDimension()
+{
+  return this->AmbientScatteringMapper->GetLightVolumeMaximumDimension();
+}
+
+void vtkAmbientScatteringRepresentation::SetSampleDistance(double distance)
+{
+  for (vtkAVSVolumeMapper* m : this->Mappers())
+  {
+    m->SetSampleDistance(distance);
+  }
+}
+
+double vtkAmbientScatteringRepresentation::GetSampleDistance()
+{
+  return this->AmbientScatteringMapper->GetSampleDistance();
+}
+
+void vtkAmbientScatteringRepresentation::SetUseJittering(int jitter)
+{
+  for (vtkAVSVolumeMapper* m : this->Mappers())
+  {
+    m->SetUseJittering(jitter);
+  }
+}
+
+int vtkAmbientScatteringRepresentation::GetUseJittering()
+{
+  return this->AmbientScatteringMapper->GetUseJittering();
+}
+
+std::array<vtkAVSVolumeMapper*, 3> vtkAmbientScatteringRepresentation::Mappers()
+{
+  return { this->EmissionAbsorptionMapper.GetPointer(),
+    this->AmbientOcclusionMapper.GetPointer(),
+    this->AmbientScatteringMapper.GetPointer() };
+}
+
+void vtkAmbientScatteringRepresentation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  static const char* const names[] = {
+    "EmissionAbsorption", "AmbientOcclusion", "AmbientScattering"
+  };
+  os << indent << "LightingModel: " << names[this->LightingModel] << "\n";
+  os << indent << "Albedo: " << this->GetAlbedo() << "\n";
+  os << indent << "ScatteringAnisotropy: " << this->GetScatteringAnisotropy() << "\n";
+  os << indent << "AmbientRadius: " << this->GetAmbientRadius() << "\n";
+  os << indent << "LightScale: " << this->GetLightScale() << "\n";
+  os << indent << "EmissionWeight: " << this->GetEmissionWeight() << "\n";
+  os << indent << "LightVolumeMaximumDimension: " << this->GetLightVolumeMaximumDimension() << "\n";
+  os << indent << "SampleDistance: " << this->GetSampleDistance() << "\n";
+  os << indent << "UseJittering: " << this->GetUseJittering() << "\n";
+  os << indent << "EmissionAbsorptionMapper: " << this->EmissionAbsorptionMapper.GetPointer()
+     << "\n";
+  os << indent << "AmbientOcclusionMapper: " << this->AmbientOcclusionMapper.GetPointer() << "\n";
+  os << indent << "AmbientScatteringMapper: " << this->AmbientScatteringMapper.GetPointer() << "\n";
+}

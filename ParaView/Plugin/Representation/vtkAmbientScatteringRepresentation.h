@@ -1,0 +1,151 @@
+/**
+ * @class   vtkAmbientScatteringRepresentation
+ * @brief   ParaView's volume representation of image data, rendered by this project's mappers
+ *
+ * The "Ambient Scattering" entry of ParaView's Representation menu for image data. It is
+ * vtkImageVolumeRepresentation (data delivery, ghost cells, outline on ranks without data, the
+ * colour map and opacity function of the vtkVolumeProperty, scalar array selection, cropping,
+ * blend mode) with the volume mapper replaced by one of the project's three, chosen by
+ * LightingModel: vtkEmissionAbsorptionVolumeMapper, vtkAmbientOcclusionVolumeMapper or
+ * vtkAmbientScatteringVolumeMapper (the default). The mappers read the renderer's lights
+ * (ParaView's light kit, headlight and the lights of the Lights panel) and camera as in any VTK
+ * renderer.
+ *
+ * The medium parameters are forwarded to the mappers that have them: Albedo and
+ * ScatteringAnisotropy to ambient scattering; AmbientRadius, EmissionWeight, LightScale and
+ * LightVolumeMaximumDimension to ambient scattering and to ambient occlusion (as its
+ * OcclusionRadius, EmissionWeight, LightScale and OcclusionVolumeMaximumDimension).
+ */
+#ifndef vtkAmbientScatteringRepresentation_h
+#define vtkAmbientScatteringRepresentation_h
+
+#include "vtkImageVolumeRepresentation.h"
+#include "vtkNew.h"                       // for vtkNew
+#include "vtkPVAmbientScatteringModule.h" // for export macro
+
+#include <array> // for std::array
+
+class vtkAVSVolumeMapper;
+class vtkAmbientOcclusionVolumeMapper;
+class vtkAmbientScatteringVolumeMapper;
+class vtkEmissionAbsorptionVolumeMapper;
+
+class VTKPVAMBIENTSCATTERING_EXPORT vtkAmbientScatteringRepresentation
+  : public vtkImageVolumeRepresentation
+{
+public:
+  static vtkAmbientScatteringRepresentation* New();
+  vtkTypeMacro(vtkAmbientScatteringRepresentation, vtkImageVolumeRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum LightingModels
+  {
+    EmissionAbsorption = 0,
+    AmbientOcclusion = 1,
+    AmbientScattering = 2
+  };
+
+  ///@{
+  /**
+   * The lighting model, that is the mapper: EmissionAbsorption (0, no lights), AmbientOcclusion
+   * (1, local ambient occlusion) or AmbientScattering (2, lights with soft shadows and multiple
+   * scattering). Default AmbientScattering. Cropping and the blend mode move with the switch.
+   */
+  void SetLightingModel(int model);
+  vtkGetMacro(LightingModel, int);
+  ///@}
+
+  ///@{
+  /**
+   * Scattering albedo in [0, 1] (ambient scattering). Default 0.9.
+   */
+  void SetAlbedo(double albedo);
+  double GetAlbedo();
+  ///@}
+
+  ///@{
+  /**
+   * Henyey–Greenstein anisotropy g in [-0.95, 0.95]; > 0 scatters forwards (ambient scattering).
+   * Default 0. (ParaView's own VolumeAnisotropy sets the vtkVolumeProperty's, which these mappers
+   * do not read.)
+   */
+  void SetScatteringAnisotropy(double g);
+  double GetScatteringAnisotropy();
+  ///@}
+
+  ///@{
+  /**
+   * Ambient radius in data units (ambient scattering) and occlusion radius (ambient occlusion).
+   * Default 0: automatic, 1/64 of the volume's diagonal, at least the smallest voxel spacing and at
+   * most half the volume's smallest side.
+   */
+  void SetAmbientRadius(double radius);
+  double GetAmbientRadius();
+  ///@}
+
+  ///@{
+  /**
+   * Multiplies the irradiance of every light for this volume (>= 0; VTK light units, a light of
+   * intensity 1 gives the irradiance 4 pi). Default 1.
+   */
+  void SetLightScale(double scale);
+  double GetLightScale();
+  ///@}
+
+  ///@{
+  /**
+   * Emission weight k_e >= 0: the medium also glows with k_e times its colour. Default 0.
+   */
+  void SetEmissionWeight(double weight);
+  double GetEmissionWeight();
+  ///@}
+
+  ///@{
+  /**
+   * Largest dimension per axis (2 to 4096) of the light volumes and the averaged extinction
+   * (ambient scattering) and of the occlusion volume (ambient occlusion). Default 128.
+   */
+  void SetLightVolumeMaximumDimension(int dimension);
+  int GetLightVolumeMaximumDimension();
+  ///@}
+
+  ///@{
+  /**
+   * Ray-marching step in data units for the three mappers. Default 0: half the smallest voxel
+   * spacing.
+   */
+  void SetSampleDistance(double distance);
+  double GetSampleDistance();
+  ///@}
+
+  ///@{
+  /**
+   * Jitter the rays' start (hides wood-grain artefacts; off gives the same picture at each
+   * render). Default on.
+   */
+  void SetUseJittering(int jitter);
+  int GetUseJittering();
+  ///@}
+
+  /**
+   * The mapper of the current lighting model.
+   */
+  vtkVolumeMapper* GetActiveVolumeMapper();
+
+protected:
+  vtkAmbientScatteringRepresentation();
+  ~vtkAmbientScatteringRepresentation() override;
+
+  std::array<vtkAVSVolumeMapper*, 3> Mappers();
+
+  int LightingModel = AmbientScattering;
+  vtkNew<vtkEmissionAbsorptionVolumeMapper> EmissionAbsorptionMapper;
+  vtkNew<vtkAmbientOcclusionVolumeMapper> AmbientOcclusionMapper;
+  vtkNew<vtkAmbientScatteringVolumeMapper> AmbientScatteringMapper;
+
+private:
+  vtkAmbientScatteringRepresentation(const vtkAmbientScatteringRepresentation&) = delete;
+  void operator=(const vtkAmbientScatteringRepresentation&) = delete;
+};
+
+#endif
