@@ -95,6 +95,11 @@ struct vtkAVSVolumeMapper::Internals
   int LightsOnGPU = -1;
   std::array<int, 3> LightGridDimensions{ 2, 2, 2 };
 
+  // The extended model's diffuse fluence (uploaded for the light volumes of this build).
+  bool DiffuseUploaded = false;
+  int DiffuseIterations = -1;
+  int DiffuseGridMaximum = -1;
+
   // Ambient occlusion.
   std::array<int, 3> OcclusionDimensions{ 0, 0, 0 };
   int OcclusionKey[2] = { -1, -1 };
@@ -164,7 +169,7 @@ void vtkAVSVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
   {
     in.RayCaster.ReleaseGraphicsResources(window);
     in.ScalarsUploaded = in.TransferUploaded = in.LightVolumesUploaded = in.OcclusionUploaded =
-      false;
+      in.DiffuseUploaded = false;
     in.SliceTable = nullptr;
     in.AveragedRadius = -1.0;
   }
@@ -410,9 +415,12 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   {
     return false; // the subclass reported why
   }
+  // The extended model's diffusion solve is sourced by the light volumes on the CPU, so it
+  // marches them there (the CPU fallback of the precomputation).
   const bool gpuScattering = effect == 2 && this->PrecomputeOnGPU &&
     in.RayCaster.SupportsComputeShaders() &&
-    table->Axes.NumberOfTau <= vtkAVSRayCaster::MaximumTauNodes;
+    table->Axes.NumberOfTau <= vtkAVSRayCaster::MaximumTauNodes &&
+    rp.Model == avs::ScatteringModel::Paper;
   if (!gpuScattering &&
     (in.ExtinctionKey[0] != in.DataVersion || in.ExtinctionKey[1] != in.OpacityVersion))
   {
@@ -592,6 +600,33 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     }
   }
   in.LightVolumesUploaded = true;
+  // The extended model: the diffuse fluence from the light volumes (DiffuseFluence.h).
+  if (rp.Model != avs::ScatteringModel::Extended)
+  {
+    in.DiffuseUploaded = false;
+    return true;
+  }
+  if (changed || !in.DiffuseUploaded || in.DiffuseIterations != rp.DiffusionIterations ||
+    in.DiffuseGridMaximum != rp.DiffusionVolumeMaximumDimension)
+  {
+    std::vector<avs::Light> lights;
+    std::vector<avs::Grid> volumes;
+    for (const auto& state : in.Lights)
+    {
+      lights.push_back(state.DataFrame);
+      volumes.push_back(state.Volume);
+    }
+    if (!in.RayCaster.GetDiffuseVolume().Upload(
+          in.RayCaster.GetWindow(), avs::ComputeDiffuse(in.Averaged, lights, volumes, rp), error))
+    {
+      vtkErrorMacro("Cannot render: " << error);
+      return false;
+    }
+    in.DiffuseUploaded = true;
+    in.DiffuseIterations = rp.DiffusionIterations;
+    in.DiffuseGridMaximum = rp.DiffusionVolumeMaximumDimension;
+    ++this->NumberOfDiffusionRebuilds;
+  }
   return true;
 }
 
@@ -810,6 +845,7 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfExtinctionRebuilds: " << this->NumberOfExtinctionRebuilds << "\n";
   os << indent << "NumberOfLightVolumeRebuilds: " << this->NumberOfLightVolumeRebuilds << "\n";
   os << indent << "NumberOfOcclusionRebuilds: " << this->NumberOfOcclusionRebuilds << "\n";
+  os << indent << "NumberOfDiffusionRebuilds: " << this->NumberOfDiffusionRebuilds << "\n";
   os << indent << "NumberOfRenderedFrames: " << this->NumberOfRenderedFrames << "\n";
   os << indent << "NumberOfInteractiveFrames: " << this->NumberOfInteractiveFrames << "\n";
 }

@@ -18,6 +18,7 @@
 #include "ScatteringTable.h"
 #include "TransferFunction.h"
 #include "vtkAVSClassification.h"
+#include "vtkAVSDiffuseVolume.h"
 #include "vtkAVSShaderOptions.h"
 
 #include "vtkAVSImageSampler.h"
@@ -118,6 +119,9 @@ public:
     std::string& error);
   bool UploadOcclusion(const avs::Grid& occlusion, std::string& error);
   bool UploadTableSlice(const avs::ScatteringSlice& slice, std::string& error);
+  /// The extended model's diffuse fluence (vtkAVSDiffuseVolume), bound when the frame's
+  /// parameters ask for the extended model.
+  vtkAVSDiffuseVolume& GetDiffuseVolume() { return this->Diffuse; }
 
   struct Frame
   {
@@ -182,6 +186,7 @@ private:
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   vtkSmartPointer<vtkTextureObject> Scalars, Occlusion, Table, Depth;
   vtkAVSClassification Classification;
+  vtkAVSDiffuseVolume Diffuse; ///< the extended model's fluence
   /// The layout the scalars were uploaded with (vtkAVSClassification::Layout).
   vtkAVSClassification::Layout ScalarLayout;
   std::vector<float> LogGain; ///< log(F(tau) exp(2 tau)) on the table's tau nodes
