@@ -3,6 +3,7 @@
 #include "AmbientOcclusion.h"
 #include "AveragedExtinction.h"
 #include "Classifier.h"
+#include "DiffuseFluence.h"
 #include "ImageSampleDistance.h"
 #include "LightVolume.h"
 #include "ReferenceRenderer.h"
@@ -97,6 +98,7 @@ struct vtkAVSVolumeMapper::Internals
 
   // The extended model's diffuse fluence (uploaded for the light volumes of this build).
   bool DiffuseUploaded = false;
+  int DiffuseOnGPU = -1;
   int DiffuseIterations = -1;
   int DiffuseGridMaximum = -1;
 
@@ -415,12 +417,9 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   {
     return false; // the subclass reported why
   }
-  // The extended model's diffusion solve is sourced by the light volumes on the CPU, so it
-  // marches them there (the CPU fallback of the precomputation).
   const bool gpuScattering = effect == 2 && this->PrecomputeOnGPU &&
     in.RayCaster.SupportsComputeShaders() &&
-    table->Axes.NumberOfTau <= vtkAVSRayCaster::MaximumTauNodes &&
-    rp.Model == avs::ScatteringModel::Paper;
+    table->Axes.NumberOfTau <= vtkAVSRayCaster::MaximumTauNodes;
   if (!gpuScattering &&
     (in.ExtinctionKey[0] != in.DataVersion || in.ExtinctionKey[1] != in.OpacityVersion))
   {
@@ -542,6 +541,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   this->LightVolumesOnGPU = gpu;
   const std::size_t n = in.WorldLights.size();
   bool changed = in.Lights.size() != n || !in.LightVolumesUploaded;
+  bool rebuilt = changed; // a light volume was rebuilt (on the CPU or the GPU)
   in.Lights.resize(n);
   for (std::size_t j = 0; j < n; ++j)
   {
@@ -583,6 +583,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
       state.SliceVersion = in.SliceVersion;
       state.Radius = rp.AmbientRadius;
       state.Built = true;
+      rebuilt = true;
       ++this->NumberOfLightVolumeRebuilds;
     }
   }
@@ -606,7 +607,8 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     in.DiffuseUploaded = false;
     return true;
   }
-  if (changed || !in.DiffuseUploaded || in.DiffuseIterations != rp.DiffusionIterations ||
+  if (rebuilt || !in.DiffuseUploaded || in.DiffuseOnGPU != (gpu ? 1 : 0) ||
+    in.DiffuseIterations != rp.DiffusionIterations ||
     in.DiffuseGridMaximum != rp.DiffusionVolumeMaximumDimension)
   {
     std::vector<avs::Light> lights;
@@ -616,12 +618,25 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
       lights.push_back(state.DataFrame);
       volumes.push_back(state.Volume);
     }
-    if (!in.RayCaster.GetDiffuseVolume().Upload(
-          in.RayCaster.GetWindow(), avs::ComputeDiffuse(in.Averaged, lights, volumes, rp), error))
+    vtkAVSDiffuseVolume& diffuse = in.RayCaster.GetDiffuseVolume();
+    const bool done = gpu
+      ? diffuse.Compute(in.RayCaster.GetWindow(),
+          avs::DiffusionGeometry(lightGrid, rp.DiffusionVolumeMaximumDimension),
+          lightGrid.Dimensions,
+          in.RayCaster.GetAveragedExtinctionTexture(),
+          in.RayCaster.GetLightVolumeTexture(0),
+          in.RayCaster.GetLightVolumeTexture(1),
+          lights,
+          rp,
+          error)
+      : diffuse.Upload(
+          in.RayCaster.GetWindow(), avs::ComputeDiffuse(in.Averaged, lights, volumes, rp), error);
+    if (!done)
     {
       vtkErrorMacro("Cannot render: " << error);
       return false;
     }
+    in.DiffuseOnGPU = gpu ? 1 : 0;
     in.DiffuseUploaded = true;
     in.DiffuseIterations = rp.DiffusionIterations;
     in.DiffuseGridMaximum = rp.DiffusionVolumeMaximumDimension;

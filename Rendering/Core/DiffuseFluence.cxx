@@ -70,11 +70,12 @@ std::vector<Cell> Operator(const Grid& averaged, const DiffusionSettings& s)
   // D per cell, 0 for vacuum; the transport mean free path 1 / sigma' at most
   // TransportLengthLimit (a flux limiter: diffusion has no meaning beyond it).
   const double floor = 1.0 / std::max(1e-30, s.TransportLengthLimit);
+  const double meanSpacing = (g.Spacing.x + g.Spacing.y + g.Spacing.z) / 3.0;
   std::vector<double> d(g.NumberOfPoints(), 0.0);
   for (std::size_t c = 0; c < d.size(); ++c)
   {
     const double sigma = reduced * std::max(0.0, static_cast<double>(averaged.Values[c]));
-    d[c] = sigma > 0.0 ? 1.0 / (3.0 * std::max(sigma, floor)) : 0.0;
+    d[c] = sigma * meanSpacing >= VacuumOpticalDepth ? 1.0 / (3.0 * std::max(sigma, floor)) : 0.0;
   }
   std::vector<Cell> cells(d.size());
   ParallelFor(n[2],

@@ -7,9 +7,9 @@
 //
 // with sigma~t the averaged extinction (section 3), T~_j the light volumes (section 5) and
 // E_j^free the lights' free irradiance (RGB: phi has three channels). D is limited to
-// TransportLengthLimit / 3; cells without extinction are vacuum; a face between the medium and
-// vacuum (or the grid's border) carries Marshak's condition phi = 2 D dphi/dn. The ray caster adds
-// T (1 - exp(-sigma_t dt)) albedo c phi / (4 pi) per sample.
+// TransportLengthLimit / 3; cells with sigma' h < VacuumOpticalDepth are vacuum; a face between the
+// medium and vacuum (or the grid's border) carries Marshak's condition phi = 2 D dphi/dn. The ray
+// caster adds T (1 - exp(-sigma_t dt)) albedo c phi / (4 pi) per sample.
 #ifndef avs_DiffuseFluence_h
 #define avs_DiffuseFluence_h
 
@@ -32,10 +32,16 @@ struct DiffusionSettings
   double TransportLengthLimit = 1.0; ///< 1 / sigma' at most (world units; 8 r in the renderers)
 };
 
+/// Cells whose reduced optical depth sigma' h (h the mean spacing) is below this are vacuum:
+/// rounding in the averaged extinction's sums leaves traces of ~1e-7 in empty space, which must
+/// not become a conducting medium.
+constexpr double VacuumOpticalDepth = 1e-3;
+
 /// The transport mean free path limit of the renderers, in ambient radii.
 constexpr double TransportLengthLimitInRadii = 16.0;
 
-/// The diffusion grid: the data's grid capped at `maximum` points per axis.
+/// The diffusion grid: the light grid (or any grid over the data's lattice box) capped at
+/// `maximum` points per axis.
 GridGeometry DiffusionGeometry(const GridGeometry& data, int maximum);
 
 /// The source q (RGB, three grids on `target`) from the averaged extinction and the light volumes

@@ -39,7 +39,7 @@ struct ScatteringParameters
 
   // The extended model (DiffuseFluence.h).
   ScatteringModel Model = ScatteringModel::Paper;
-  int DiffusionVolumeMaximumDimension = 64; ///< the diffusion grid: the data's, capped by this
+  int DiffusionVolumeMaximumDimension = 64; ///< the diffusion grid: the light grid, capped
   int DiffusionIterations = 64;             ///< red-black SOR sweeps of the diffusion solve
 
   // Ambient occlusion (section 7).

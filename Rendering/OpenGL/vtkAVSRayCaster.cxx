@@ -1252,3 +1252,14 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   }
   return true;
 }
+
+// The extended model's GPU diffusion solve (vtkAVSDiffuseVolume) reads these.
+vtkTextureObject* vtkAVSRayCaster::GetAveragedExtinctionTexture() const
+{
+  return this->AveragedExtinction;
+}
+
+vtkTextureObject* vtkAVSRayCaster::GetLightVolumeTexture(int t) const
+{
+  return t >= 0 && t < NumberOfLightTextures ? this->LightVolumes[t].Get() : nullptr;
+}

@@ -122,6 +122,10 @@ public:
   /// The extended model's diffuse fluence (vtkAVSDiffuseVolume), bound when the frame's
   /// parameters ask for the extended model.
   vtkAVSDiffuseVolume& GetDiffuseVolume() { return this->Diffuse; }
+  /// What the GPU diffusion solve reads: the averaged extinction and the packed light volumes
+  /// on the light grid (null where absent).
+  vtkTextureObject* GetAveragedExtinctionTexture() const;
+  vtkTextureObject* GetLightVolumeTexture(int t) const;
 
   struct Frame
   {
