@@ -131,6 +131,24 @@ StudyScene MakeScene(const std::string& name, int voxels, double cloudOpacity)
     lamp->SetAttenuationValues(0.2, 0.0, 4.0);
     s.Lights.push_back(lamp);
   }
+  else if (name == "plume_point")
+  {
+    // A point light inside a dense plume (the study's cloud at the given opacity), with VTK's
+    // default attenuation (1, 0, 0): no falloff with distance.
+    s.Density = avs::MakeCloud(voxels);
+    s.Property = Property(cloudOpacity, 2.0 / 40.0, { { 0.0, white }, { 1.0, white } }, 0.05);
+    s.Albedo = 0.95;
+    s.Anisotropy = 0.6;
+    auto lamp = vtkSmartPointer<vtkLight>::New();
+    lamp->SetLightTypeToSceneLight();
+    lamp->SetPositional(true);
+    lamp->SetConeAngle(180);
+    lamp->SetPosition(0, 0, 0);
+    lamp->SetFocalPoint(0, 0, -1);
+    lamp->SetIntensity(1.5 / (4.0 * avs::Pi)); // irradiance 1.5
+    lamp->SetAttenuationValues(1.0, 0.0, 0.0);
+    s.Lights.push_back(lamp);
+  }
   else // dense_medical
   {
     s.Density = MakeDense(voxels);
@@ -289,7 +307,8 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
   std::vector<AccuracyResult>& results,
   double* pathTracerNoise)
 {
-  const std::vector<std::string> known = AccuracySettings().Scenes;
+  std::vector<std::string> known = AccuracySettings().Scenes;
+  known.push_back("plume_point"); // not in the default list
   if (settings.Scenes.empty())
   {
     std::fprintf(stderr, "avs-accuracy: no scenes to render\n");

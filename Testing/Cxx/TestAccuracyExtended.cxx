@@ -2,8 +2,8 @@
 // pixel), asserting what README.md ("The extended model, measured") reports at full size:
 // - on the side-lit clouds of optical thickness 8.8 and 27 (--cloud-opacity 0.25, 0.6) the
 //   extended model has the lowest RMSE of EA, AO and both ambient-scattering models (by more
-//   than the truth's noise), and its
-//   mean radiance is within 0.75-1.33 of the truth's (the paper's model: about 0.40);
+//   than the truth's noise), and its mean radiance is within 0.7-1.33 of the truth's (the
+//   paper's model: about 0.40);
 // - lit from behind, its error is no worse than the paper model's (the silver lining stays);
 // - on an optically thin cloud (thickness about 0.3, --cloud-opacity 0.01) it reduces to the
 //   paper's model: both errors and both mean radiances agree within the truth's noise.
@@ -65,7 +65,8 @@ int main(int, char*[])
       Expect(
         o.Rmse - x.Rmse > x.TruthNoise, std::string("side-lit: extended below ") + other + tag);
     }
-    Expect(x.MeanRatio >= 0.75 && x.MeanRatio <= 1.33, "side-lit mean within 0.75-1.33" + tag);
+    // 0.76 and 0.87 here, 0.75 and 0.86 at the study's full size: a margin for other drivers.
+    Expect(x.MeanRatio >= 0.7 && x.MeanRatio <= 1.33, "side-lit mean within 0.7-1.33" + tag);
     Expect(r["cloud_side/as"].MeanRatio < 0.6, "the paper's model too dark side-lit" + tag);
     Expect(r["cloud_back/asx"].Rmse <= r["cloud_back/as"].Rmse + r["cloud_back/as"].TruthNoise,
       "back-lit: extended no worse than the paper's" + tag);
