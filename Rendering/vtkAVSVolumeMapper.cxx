@@ -3,6 +3,7 @@
 #include "AmbientOcclusion.h"
 #include "AveragedExtinction.h"
 #include "Classifier.h"
+#include "DiffuseFluence.h"
 #include "ImageSampleDistance.h"
 #include "LightVolume.h"
 #include "ReferenceRenderer.h"
@@ -95,6 +96,12 @@ struct vtkAVSVolumeMapper::Internals
   int LightsOnGPU = -1;
   std::array<int, 3> LightGridDimensions{ 2, 2, 2 };
 
+  // The extended model's diffuse fluence (uploaded for the light volumes of this build).
+  bool DiffuseUploaded = false;
+  int DiffuseOnGPU = -1;
+  int DiffuseIterations = -1;
+  int DiffuseGridMaximum = -1;
+
   // Ambient occlusion.
   std::array<int, 3> OcclusionDimensions{ 0, 0, 0 };
   int OcclusionKey[2] = { -1, -1 };
@@ -164,7 +171,7 @@ void vtkAVSVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
   {
     in.RayCaster.ReleaseGraphicsResources(window);
     in.ScalarsUploaded = in.TransferUploaded = in.LightVolumesUploaded = in.OcclusionUploaded =
-      false;
+      in.DiffuseUploaded = false;
     in.SliceTable = nullptr;
     in.AveragedRadius = -1.0;
   }
@@ -534,6 +541,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   this->LightVolumesOnGPU = gpu;
   const std::size_t n = in.WorldLights.size();
   bool changed = in.Lights.size() != n || !in.LightVolumesUploaded;
+  bool rebuilt = changed; // a light volume was rebuilt (on the CPU or the GPU)
   in.Lights.resize(n);
   for (std::size_t j = 0; j < n; ++j)
   {
@@ -575,6 +583,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
       state.SliceVersion = in.SliceVersion;
       state.Radius = rp.AmbientRadius;
       state.Built = true;
+      rebuilt = true;
       ++this->NumberOfLightVolumeRebuilds;
     }
   }
@@ -592,6 +601,47 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     }
   }
   in.LightVolumesUploaded = true;
+  // The extended model: the diffuse fluence from the light volumes (DiffuseFluence.h).
+  if (rp.Model != avs::ScatteringModel::Extended)
+  {
+    in.DiffuseUploaded = false;
+    return true;
+  }
+  if (rebuilt || !in.DiffuseUploaded || in.DiffuseOnGPU != (gpu ? 1 : 0) ||
+    in.DiffuseIterations != rp.DiffusionIterations ||
+    in.DiffuseGridMaximum != rp.DiffusionVolumeMaximumDimension)
+  {
+    std::vector<avs::Light> lights;
+    std::vector<avs::Grid> volumes;
+    for (const auto& state : in.Lights)
+    {
+      lights.push_back(state.DataFrame);
+      volumes.push_back(state.Volume);
+    }
+    vtkAVSDiffuseVolume& diffuse = in.RayCaster.GetDiffuseVolume();
+    const bool done = gpu
+      ? diffuse.Compute(in.RayCaster.GetWindow(),
+          avs::DiffusionGeometry(lightGrid, rp.DiffusionVolumeMaximumDimension),
+          lightGrid.Dimensions,
+          in.RayCaster.GetAveragedExtinctionTexture(),
+          in.RayCaster.GetLightVolumeTexture(0),
+          in.RayCaster.GetLightVolumeTexture(1),
+          lights,
+          rp,
+          error)
+      : diffuse.Upload(
+          in.RayCaster.GetWindow(), avs::ComputeDiffuse(in.Averaged, lights, volumes, rp), error);
+    if (!done)
+    {
+      vtkErrorMacro("Cannot render: " << error);
+      return false;
+    }
+    in.DiffuseOnGPU = gpu ? 1 : 0;
+    in.DiffuseUploaded = true;
+    in.DiffuseIterations = rp.DiffusionIterations;
+    in.DiffuseGridMaximum = rp.DiffusionVolumeMaximumDimension;
+    ++this->NumberOfDiffusionRebuilds;
+  }
   return true;
 }
 
@@ -830,6 +880,7 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfExtinctionRebuilds: " << this->NumberOfExtinctionRebuilds << "\n";
   os << indent << "NumberOfLightVolumeRebuilds: " << this->NumberOfLightVolumeRebuilds << "\n";
   os << indent << "NumberOfOcclusionRebuilds: " << this->NumberOfOcclusionRebuilds << "\n";
+  os << indent << "NumberOfDiffusionRebuilds: " << this->NumberOfDiffusionRebuilds << "\n";
   os << indent << "NumberOfRenderedFrames: " << this->NumberOfRenderedFrames << "\n";
   os << indent << "NumberOfInteractiveFrames: " << this->NumberOfInteractiveFrames << "\n";
 }

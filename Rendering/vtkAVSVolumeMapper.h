@@ -220,12 +220,13 @@ public:
    * How often the mapper converted and uploaded the input scalars, rebuilt the averaged
    * extinction, rebuilt a light volume (one count per light), rebuilt the ambient-occlusion
    * volume, rendered a frame, and rendered an interactive frame (AutoAdjustSampleDistances
-   * on, less than a second allotted).
+   * on, less than a second allotted), and solved the extended model's diffusion.
    */
   vtkGetMacro(NumberOfDataUploads, int);
   vtkGetMacro(NumberOfExtinctionRebuilds, int);
   vtkGetMacro(NumberOfLightVolumeRebuilds, int);
   vtkGetMacro(NumberOfOcclusionRebuilds, int);
+  vtkGetMacro(NumberOfDiffusionRebuilds, int);
   vtkGetMacro(NumberOfRenderedFrames, int);
   vtkGetMacro(NumberOfInteractiveFrames, int);
   ///@}
@@ -278,6 +279,7 @@ protected:
   int NumberOfDataUploads = 0;
   int NumberOfExtinctionRebuilds = 0;
   int NumberOfLightVolumeRebuilds = 0;
+  int NumberOfDiffusionRebuilds = 0;
   int NumberOfOcclusionRebuilds = 0;
   int NumberOfRenderedFrames = 0;
   int NumberOfInteractiveFrames = 0;

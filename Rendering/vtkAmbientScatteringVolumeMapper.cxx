@@ -28,6 +28,8 @@ void vtkAmbientScatteringVolumeMapper::FillParameters(avs::ScatteringParameters&
   p.EmissionWeight = this->EmissionWeight;
   p.LightScale = this->LightScale;
   p.LightVolumeMaximumDimension = this->LightVolumeMaximumDimension;
+  p.Model = this->ScatteringModel == ExtendedModel ? avs::ScatteringModel::Extended
+                                                   : avs::ScatteringModel::Paper;
 }
 
 const avs::ScatteringTable* vtkAmbientScatteringVolumeMapper::GetScatteringTable()
@@ -56,6 +58,7 @@ void vtkAmbientScatteringVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EmissionWeight: " << this->EmissionWeight << "\n";
   os << indent << "LightScale: " << this->LightScale << "\n";
   os << indent << "LightVolumeMaximumDimension: " << this->LightVolumeMaximumDimension << "\n";
+  os << indent << "ScatteringModel: " << this->GetScatteringModelAsString() << "\n";
   os << indent << "ScatteringTableFileName: "
      << (this->ScatteringTableFileName ? this->ScatteringTableFileName : "(the shipped table)")
      << "\n";

@@ -91,6 +91,30 @@ public:
 
   ///@{
   /**
+   * The model of ambient scattering. PaperModel (0, the default): Ament et al. 2013 as this
+   * project implements it (ALGORITHM.md sections 3-6). ExtendedModel (1): the paper's model plus
+   * long-range multiple scattering, the diffuse fluence of a diffusion solve on a coarse grid
+   * sourced by the light the tubes deliver (ARCHITECTURE.md, "Beyond the paper"); brighter and
+   * closer to the truth in thick clouds lit from the side, the same in optically thin media.
+   * It costs one more texture fetch per sample and the solve at each light-volume rebuild.
+   */
+  enum
+  {
+    PaperModel = 0,
+    ExtendedModel = 1
+  };
+  vtkSetClampMacro(ScatteringModel, int, PaperModel, ExtendedModel);
+  vtkGetMacro(ScatteringModel, int);
+  void SetScatteringModelToPaper() { this->SetScatteringModel(PaperModel); }
+  void SetScatteringModelToExtended() { this->SetScatteringModel(ExtendedModel); }
+  const char* GetScatteringModelAsString()
+  {
+    return this->ScatteringModel == ExtendedModel ? "Extended" : "Paper";
+  }
+  ///@}
+
+  ///@{
+  /**
    * The scattering table file. Default: empty, the table shipped with the module.
    */
   vtkSetStringMacro(ScatteringTableFileName);
@@ -111,6 +135,7 @@ protected:
   double LightScale = 1.0;
   int LightVolumeMaximumDimension = 128;
   char* ScatteringTableFileName = nullptr;
+  int ScatteringModel = PaperModel;
   vtkAmbientScatteringTable* Table;
 
 private:

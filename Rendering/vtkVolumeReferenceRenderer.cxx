@@ -300,6 +300,8 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
   parameters.TerminationTransmittance = this->TerminationTransmittance;
   parameters.LightVolumeMaximumDimension = this->LightVolumeMaximumDimension;
   parameters.OcclusionVolumeMaximumDimension = this->OcclusionVolumeMaximumDimension;
+  parameters.Model = this->ScatteringModel == ExtendedModel ? avs::ScatteringModel::Extended
+                                                            : avs::ScatteringModel::Paper;
   const avs::ScatteringParameters resolved = parameters.Resolve(scene.Scalars.Geometry);
 
   const int w = std::max(1, this->ImageSize[0]);
@@ -407,6 +409,7 @@ void vtkVolumeReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
      << this->Background[2] << ")\n";
   os << indent << "Albedo: " << this->Albedo << "\n";
   os << indent << "Anisotropy: " << this->Anisotropy << "\n";
+  os << indent << "ScatteringModel: " << this->GetScatteringModelAsString() << "\n";
   os << indent << "AmbientRadius: " << this->AmbientRadius
      << (this->AmbientRadius > 0 ? "" : " (automatic)") << "\n";
   os << indent << "EmissionWeight: " << this->EmissionWeight << "\n";

@@ -173,6 +173,30 @@ public:
 
   ///@{
   /**
+   * The model of ambient scattering. PaperModel (0, the default): Ament et al. 2013 as this
+   * project implements it (ALGORITHM.md sections 3-6). ExtendedModel (1): the paper's model plus
+   * long-range multiple scattering, the diffuse fluence of a diffusion solve on a coarse grid
+   * sourced by the light the tubes deliver (ARCHITECTURE.md, "Beyond the paper"); brighter and
+   * closer to the truth in thick clouds lit from the side, the same in optically thin media.
+   * It costs one more texture fetch per sample and the solve at each light-volume rebuild.
+   */
+  enum
+  {
+    PaperModel = 0,
+    ExtendedModel = 1
+  };
+  vtkSetClampMacro(ScatteringModel, int, PaperModel, ExtendedModel);
+  vtkGetMacro(ScatteringModel, int);
+  void SetScatteringModelToPaper() { this->SetScatteringModel(PaperModel); }
+  void SetScatteringModelToExtended() { this->SetScatteringModel(ExtendedModel); }
+  const char* GetScatteringModelAsString()
+  {
+    return this->ScatteringModel == ExtendedModel ? "Extended" : "Paper";
+  }
+  ///@}
+
+  ///@{
+  /**
    * Henyey–Greenstein anisotropy g in [-0.95, 0.95]. Default 0.
    */
   vtkSetClampMacro(Anisotropy, double, -0.95, 0.95);
@@ -343,6 +367,7 @@ protected:
   double Background[3] = { 0.0, 0.0, 0.0 };
   double Albedo = 0.9;
   double Anisotropy = 0.0;
+  int ScatteringModel = PaperModel;
   double AmbientRadius = 0.0;
   double EmissionWeight = 0.0;
   double OcclusionRadius = 0.0;

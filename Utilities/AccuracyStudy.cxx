@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 
 namespace
 {
@@ -130,6 +131,24 @@ StudyScene MakeScene(const std::string& name, int voxels, double cloudOpacity)
     lamp->SetAttenuationValues(0.2, 0.0, 4.0);
     s.Lights.push_back(lamp);
   }
+  else if (name == "plume_point")
+  {
+    // A point light inside a dense plume (the study's cloud at the given opacity), with VTK's
+    // default attenuation (1, 0, 0): no falloff with distance.
+    s.Density = avs::MakeCloud(voxels);
+    s.Property = Property(cloudOpacity, 2.0 / 40.0, { { 0.0, white }, { 1.0, white } }, 0.05);
+    s.Albedo = 0.95;
+    s.Anisotropy = 0.6;
+    auto lamp = vtkSmartPointer<vtkLight>::New();
+    lamp->SetLightTypeToSceneLight();
+    lamp->SetPositional(true);
+    lamp->SetConeAngle(180);
+    lamp->SetPosition(0, 0, 0);
+    lamp->SetFocalPoint(0, 0, -1);
+    lamp->SetIntensity(1.5 / (4.0 * avs::Pi)); // irradiance 1.5
+    lamp->SetAttenuationValues(1.0, 0.0, 0.0);
+    s.Lights.push_back(lamp);
+  }
   else // dense_medical
   {
     s.Density = MakeDense(voxels);
@@ -203,13 +222,93 @@ vtkSmartPointer<vtkImageData> ToPicture(const std::vector<double>& rgb,
   }
   return image;
 }
+
+// EA, AO, the paper's ambient scattering, the extended model.
+constexpr int Models = 4;
+
+AccuracyResult Measured(const std::string& scene,
+  const std::string& model,
+  const std::vector<double>& picture,
+  const std::vector<double>& reference,
+  double noise)
+{
+  double se = 0.0, l1 = 0.0, norm = 0.0;
+  for (std::size_t i = 0; i < reference.size(); ++i)
+  {
+    const double d = picture[i] - reference[i];
+    se += d * d;
+    l1 += std::abs(d);
+    norm += std::abs(reference[i]);
+  }
+  AccuracyResult r;
+  r.Scene = scene;
+  r.Model = model;
+  r.Rmse = std::sqrt(se / reference.size());
+  r.RelativeL1 = norm > 0 ? l1 / norm : 0.0;
+  r.TruthNoise = noise;
+  return r;
+}
+
+// RGB of a float image clamped into [0, 1], row 0 at the bottom.
+std::vector<double> Clamped(const avs::Image& image)
+{
+  std::vector<double> out(3 * static_cast<std::size_t>(image.Width) * image.Height);
+  for (int y = 0; y < image.Height; ++y)
+    for (int x = 0; x < image.Width; ++x)
+      for (int c = 0; c < 3; ++c)
+        out[3 * (static_cast<std::size_t>(y) * image.Width + x) + c] =
+          std::clamp(static_cast<double>(image.At(x, y)[c]), 0.0, 1.0);
+  return out;
+}
+
+// A path-traced picture, from the settings' cache folder when it holds it (same scene, sizes,
+// paths, cloud opacity and radius), rendered and kept there otherwise.
+template<typename Render>
+std::vector<double> TruthPicture(const AccuracySettings& s,
+  const std::string& scene,
+  int run,
+  Render&& render)
+{
+  std::string file;
+  if (!s.TruthCache.empty())
+  {
+    char key[256];
+    std::snprintf(key,
+      sizeof(key),
+      "/%s-%d-%d-%d-%.4f-%.4f-%d.truth",
+      scene.c_str(),
+      s.ImageSize,
+      s.Voxels,
+      s.SamplesPerPixel,
+      s.CloudOpacity,
+      s.AmbientRadius,
+      run);
+    file = s.TruthCache + key;
+    std::ifstream in(file, std::ios::binary);
+    std::vector<double> cached(3 * static_cast<std::size_t>(s.ImageSize) * s.ImageSize);
+    if (in.read(reinterpret_cast<char*>(cached.data()),
+          static_cast<std::streamsize>(cached.size() * sizeof(double))))
+    {
+      return cached;
+    }
+  }
+  std::vector<double> picture = Clamped(render());
+  if (!file.empty())
+  {
+    std::ofstream out(file, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(picture.data()),
+      static_cast<std::streamsize>(picture.size() * sizeof(double)));
+  }
+  return picture;
+}
 } // namespace
 
 bool RunAccuracyStudy(const AccuracySettings& settings,
   std::vector<AccuracyResult>& results,
   double* pathTracerNoise)
 {
-  const std::vector<std::string> known = AccuracySettings().Scenes;
+  std::vector<std::string> known = AccuracySettings().Scenes;
+  known.push_back("plume_point"); // not in the default list
   if (settings.Scenes.empty())
   {
     std::fprintf(stderr, "avs-accuracy: no scenes to render\n");
@@ -272,17 +371,14 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
     avs::PathTracerSettings pts;
     pts.SamplesPerPixel = settings.SamplesPerPixel;
     std::vector<double> truth[2];
+    const avs::Camera camera = vtkAVSSceneTranslator::ToCamera(renderer->GetActiveCamera());
     for (int run = 0; run < 2; ++run)
     {
       pts.Seed = 17 + run;
-      const avs::Image image = avs::RenderPathTraced(
-        core, rp, pts, vtkAVSSceneTranslator::ToCamera(renderer->GetActiveCamera()), size, size);
-      truth[run].resize(3 * static_cast<std::size_t>(size) * size);
-      for (int y = 0; y < size; ++y)
-        for (int x = 0; x < size; ++x)
-          for (int c = 0; c < 3; ++c)
-            truth[run][3 * (static_cast<std::size_t>(y) * size + x) + c] =
-              std::clamp(static_cast<double>(image.At(x, y)[c]), 0.0, 1.0);
+      truth[run] = TruthPicture(settings,
+        name,
+        run,
+        [&]() { return avs::RenderPathTraced(core, rp, pts, camera, size, size); });
     }
     // Noise of the mean of both runs: the RMSE between them / 2.
     double noise = 0.0;
@@ -310,6 +406,11 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
     as->SetAmbientRadius(settings.AmbientRadius);
     as->SetAlbedo(scene.Albedo);
     as->SetAnisotropy(scene.Anisotropy);
+    vtkNew<vtkAmbientScatteringVolumeMapper> asx; // the extended model
+    asx->SetAmbientRadius(settings.AmbientRadius);
+    asx->SetAlbedo(scene.Albedo);
+    asx->SetAnisotropy(scene.Anisotropy);
+    asx->SetScatteringModelToExtended();
 
     // EA's colours scaled by k (clamped at 1 by the transfer function).
     vtkNew<vtkVolumeProperty> eaProperty;
@@ -327,10 +428,10 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
       scaled->SetNodeValue(i, node);
     }
     eaProperty->SetColor(scaled);
-    const std::string models[3] = { "ea", "ao", "as" };
-    vtkAVSVolumeMapper* mappers[3] = { ea, ao, as };
-    std::vector<double> pictures[3];
-    for (int m = 0; m < 3; ++m)
+    const std::string models[Models] = { "ea", "ao", "as", "asx" };
+    vtkAVSVolumeMapper* mappers[Models] = { ea, ao, as, asx };
+    std::vector<double> pictures[Models];
+    for (int m = 0; m < Models; ++m)
     {
       mappers[m]->SetInputData(data);
       mappers[m]->UseJitteringOff();
@@ -356,21 +457,12 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
         return false;
       }
       pictures[m] = Pixels(grab->GetOutput());
-      double se = 0.0, l1 = 0.0, norm = 0.0;
-      for (std::size_t i = 0; i < reference.size(); ++i)
-      {
-        const double d = pictures[m][i] - reference[i];
-        se += d * d;
-        l1 += std::abs(d);
-        norm += std::abs(reference[i]);
-      }
-      AccuracyResult r;
-      r.Scene = name;
-      r.Model = models[m];
-      r.Rmse = std::sqrt(se / reference.size());
-      r.RelativeL1 = norm > 0 ? l1 / norm : 0.0;
-      r.TruthNoise = noise;
-      results.push_back(r);
+      results.push_back(Measured(name, models[m], pictures[m], reference, noise));
+    }
+    for (int m = 0; m < Models; ++m)
+    {
+      results[results.size() - Models + m].MeanRatio =
+        Sum(reference) > 0 ? Sum(pictures[m]) / Sum(reference) : 0.0;
     }
     if (settings.Verbose)
     {
@@ -379,35 +471,33 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
       avs::PathTracerSettings single = pts;
       single.Seed = 17;
       single.MaximumBounces = 1;
-      const avs::Image once = avs::RenderPathTraced(
-        core, rp, single, vtkAVSSceneTranslator::ToCamera(renderer->GetActiveCamera()), size, size);
-      double onceSum = 0.0;
-      for (int y = 0; y < size; ++y)
-        for (int x = 0; x < size; ++x)
-          for (int c = 0; c < 3; ++c)
-            onceSum += std::clamp(static_cast<double>(once.At(x, y)[c]), 0.0, 1.0);
+      const std::vector<double> once = TruthPicture(settings,
+        name,
+        2,
+        [&]() { return avs::RenderPathTraced(core, rp, single, camera, size, size); });
       const double truthSum = Sum(reference);
       std::fprintf(stderr,
         "[avs-accuracy] %s: k = %.3f, path-tracer noise (RMSE) %.4f, single scattering %.0f %% "
-        "of the truth, mean radiance / truth: ea %.2f ao %.2f as %.2f\n",
+        "of the truth, mean radiance / truth: ea %.2f ao %.2f as %.2f asx %.2f\n",
         name.c_str(),
         k,
         noise,
-        truthSum > 0 ? 100.0 * onceSum / truthSum : 0.0,
-        truthSum > 0 ? Sum(pictures[0]) / truthSum : 0.0,
-        truthSum > 0 ? Sum(pictures[1]) / truthSum : 0.0,
-        truthSum > 0 ? Sum(pictures[2]) / truthSum : 0.0);
+        truthSum > 0 ? 100.0 * Sum(once) / truthSum : 0.0,
+        results[results.size() - 4].MeanRatio,
+        results[results.size() - 3].MeanRatio,
+        results[results.size() - 2].MeanRatio,
+        results[results.size() - 1].MeanRatio);
     }
     if (!settings.OutputPicture.empty())
     {
       vtkNew<vtkImageAppend> row;
       row->SetAppendAxis(0);
       row->AddInputData(ToPicture(reference, size));
-      for (int m = 0; m < 3; ++m)
+      for (int m = 0; m < Models; ++m)
       {
         row->AddInputData(ToPicture(pictures[m], size));
       }
-      for (int m = 0; m < 3; ++m)
+      for (int m = 0; m < Models; ++m)
       {
         std::vector<double> diff(reference.size());
         for (std::size_t i = 0; i < diff.size(); ++i)

@@ -17,10 +17,11 @@
 struct AccuracyResult
 {
   std::string Scene;
-  std::string Model; ///< "ea", "ao" or "as"
+  std::string Model; ///< "ea", "ao", "as" (the paper's model) or "asx" (the extended one)
   double Rmse = 0.0;
   double RelativeL1 = 0.0;
   double TruthNoise = 0.0; ///< RMSE of the scene's truth itself (from two seeds)
+  double MeanRatio = 0.0;  ///< the model's mean radiance / the truth's
 };
 
 struct AccuracySettings
@@ -35,6 +36,9 @@ struct AccuracySettings
   /// Ambient radius of the ambient-scattering mapper and occlusion radius of the AO mapper, in
   /// world units (the scenes span [-1, 1]^3); 0 keeps their default (1/64 of the diagonal).
   double AmbientRadius = 0.0;
+  /// A folder where the path tracer's pictures are kept between runs (keyed by scene, sizes,
+  /// paths, cloud opacity and radius); empty: none.
+  std::string TruthCache;
   std::string OutputPicture; ///< a PNG of truth | EA | AO | AS | 4x |errors|, one row per scene
   bool Verbose = false;
 };

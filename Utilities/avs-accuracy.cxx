@@ -30,12 +30,14 @@ int main(int argc, char* argv[])
         "Renders four scenes (cloud_back, cloud_side, nebula_point, dense_medical) with the GPU\n"
         "EA, AO and ambient-scattering mappers and with the path tracer, and prints each\n"
         "mapper's error.\n"
-        "  --scenes          some of the scenes, comma-separated\n"
+        "  --scenes          some of the scenes, comma-separated; also plume_point (a point\n"
+        "                    light with VTK's default attenuation inside the cloud)\n"
         "  --cloud-opacity   opacity of the clouds' densest scalar, in (0, 1]; their optical\n"
         "                    thickness scales with -ln(1 - X)\n"
         "  --ambient-radius  the ambient-scattering mapper's AmbientRadius and the AO mapper's\n"
         "                    OcclusionRadius (world units; the scenes span [-1, 1]^3; 0: their\n"
         "                    default, 1/64 of the diagonal)\n"
+        "  --truth-cache     a folder that keeps the path tracer's pictures between runs\n"
         "Defaults: --size 96 --voxels 64 --spp 512 --output accuracy.png --cloud-opacity 0.6\n"
         "--ambient-radius 0\n");
       return 0;
@@ -65,6 +67,8 @@ int main(int argc, char* argv[])
     }
     else if (arg == "--cloud-opacity")
       settings.CloudOpacity = std::atof(value.c_str());
+    else if (arg == "--truth-cache")
+      settings.TruthCache = value;
     else if (arg == "--ambient-radius")
       settings.AmbientRadius = std::atof(value.c_str());
     else
@@ -81,11 +85,12 @@ int main(int argc, char* argv[])
   }
   for (const auto& r : results)
   {
-    std::printf("accuracy %s %s rmse=%.4f rel_l1=%.4f\n",
+    std::printf("accuracy %s %s rmse=%.4f rel_l1=%.4f mean/truth=%.3f\n",
       r.Scene.c_str(),
       r.Model.c_str(),
       r.Rmse,
-      r.RelativeL1);
+      r.RelativeL1,
+      r.MeanRatio);
   }
   std::printf("# path-tracer noise (RMSE of the truth itself, worst scene): %.4f\n", noise);
   std::printf("# picture: %s\n", settings.OutputPicture.c_str());

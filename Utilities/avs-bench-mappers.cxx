@@ -8,7 +8,8 @@
 // transfer functions for every mapper, jittering off. Each mapper renders a warm-up frame (which
 // includes its precomputation), then frames with a camera turning 3 degrees per frame; the
 // median of their times is reported. Then the rebuild after a transfer-function change and
-// after a light move (ambient scattering, 4 lights): the frame after the change less the median
+// after a light move (ambient scattering, 4 lights, in both models: the paper's, as4, and the
+// extended one, asx4): the frame after the change less the median
 // frame, the median over five changes of each kind.
 //
 // Then interaction, as vtkRenderWindowInteractor drives it (its style sets the render window's
@@ -451,15 +452,19 @@ int main(int argc, char* argv[])
   vtkNew<vtkAmbientOcclusionVolumeMapper> ao;
   vtkNew<vtkAmbientScatteringVolumeMapper> as1;
   vtkNew<vtkAmbientScatteringVolumeMapper> as4;
+  vtkNew<vtkAmbientScatteringVolumeMapper> asx4; // the extended model
+  asx4->SetScatteringModelToExtended();
   if (lightGrid > 0)
   {
     as1->SetLightVolumeMaximumDimension(lightGrid);
     as4->SetLightVolumeMaximumDimension(lightGrid);
+    asx4->SetLightVolumeMaximumDimension(lightGrid);
   }
   for (vtkAVSVolumeMapper* m : { static_cast<vtkAVSVolumeMapper*>(ea),
          static_cast<vtkAVSVolumeMapper*>(ao),
          static_cast<vtkAVSVolumeMapper*>(as1),
-         static_cast<vtkAVSVolumeMapper*>(as4) })
+         static_cast<vtkAVSVolumeMapper*>(as4),
+         static_cast<vtkAVSVolumeMapper*>(asx4) })
   {
     m->SetInputData(b.Volume);
     m->SetSampleDistance(sampleDistance);
@@ -474,7 +479,8 @@ int main(int argc, char* argv[])
            static_cast<vtkVolumeMapper*>(ea),
            static_cast<vtkVolumeMapper*>(ao),
            static_cast<vtkVolumeMapper*>(as1),
-           static_cast<vtkVolumeMapper*>(as4) })
+           static_cast<vtkVolumeMapper*>(as4),
+           static_cast<vtkVolumeMapper*>(asx4) })
     {
       for (const auto& p : planes)
       {
@@ -508,44 +514,64 @@ int main(int argc, char* argv[])
   std::printf("bench frame_as4 %.4f s\n", as4Times.second);
   std::printf("bench first_frame_as4 %.4f s\n", as4Times.first);
 
+  const auto asx4Times = b.Measure(asx4);
+  std::printf("bench frame_asx4 %.4f s\n", asx4Times.second);
+  std::printf("bench first_frame_asx4 %.4f s\n", asx4Times.first);
+
   // Rebuilds with 4 lights: transfer-function changes, then moves of one light; each is the
   // frame after the change less the median frame, the median over five changes (one frame
-  // alone varies too much on a loaded machine).
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(as4);
-  volume->SetProperty(b.Property);
-  b.Renderer->AddVolume(volume);
-  b.Frame();
-  const int changes = 5;
-  std::vector<double> tfFrames, lightFrames;
-  const int extinctionBefore = as4->GetNumberOfExtinctionRebuilds();
-  for (int c = 0; c < changes; ++c)
+  // alone varies too much on a loaded machine). Returns false if the rebuilds were not those.
+  // `round` shifts the values, so that the second mapper's first change is a change too.
+  auto rebuilds = [&](vtkAmbientScatteringVolumeMapper* mapper,
+                    int round,
+                    double frame,
+                    double& tfRebuild,
+                    double& lightRebuild)
   {
-    b.Opacity->AddPoint(0.75, c % 2 == 0 ? 0.45 : 0.40);
-    tfFrames.push_back(b.Frame() - as4Times.second);
-  }
-  const int lightsBefore = as4->GetNumberOfLightVolumeRebuilds();
-  for (int c = 0; c < changes; ++c)
-  {
-    b.Lights[1]->SetPosition(0.1, 0.05 * (c + 1), 0.0);
-    lightFrames.push_back(b.Frame() - as4Times.second);
-  }
-  b.Renderer->RemoveVolume(volume);
-  if (as4->GetNumberOfExtinctionRebuilds() - extinctionBefore != changes ||
-    as4->GetNumberOfLightVolumeRebuilds() - lightsBefore != changes)
+    vtkNew<vtkVolume> volume;
+    volume->SetMapper(mapper);
+    volume->SetProperty(b.Property);
+    b.Renderer->AddVolume(volume);
+    b.Frame();
+    const int changes = 5;
+    std::vector<double> tfFrames, lightFrames;
+    const int extinctionBefore = mapper->GetNumberOfExtinctionRebuilds();
+    for (int c = 0; c < changes; ++c)
+    {
+      b.Opacity->AddPoint(0.75, (c + round) % 2 == 0 ? 0.45 : 0.40);
+      tfFrames.push_back(b.Frame() - frame);
+    }
+    const int lightsBefore = mapper->GetNumberOfLightVolumeRebuilds();
+    for (int c = 0; c < changes; ++c)
+    {
+      b.Lights[1]->SetPosition(0.1, 0.05 * (c + 1) - 0.02 * round, 0.0);
+      lightFrames.push_back(b.Frame() - frame);
+    }
+    b.Renderer->RemoveVolume(volume);
+    tfRebuild = Median(tfFrames);
+    lightRebuild = Median(lightFrames);
+    return mapper->GetNumberOfExtinctionRebuilds() - extinctionBefore == changes &&
+      mapper->GetNumberOfLightVolumeRebuilds() - lightsBefore == changes;
+  };
+  double tfRebuild = 0.0, lightRebuild = 0.0, tfRebuildX = 0.0, lightRebuildX = 0.0;
+  if (!rebuilds(as4, 0, as4Times.second, tfRebuild, lightRebuild) ||
+    !rebuilds(asx4, 1, asx4Times.second, tfRebuildX, lightRebuildX))
   {
     std::fprintf(stderr, "avs-bench-mappers: the rebuilds were not the ones measured\n");
     return 1;
   }
-  const double tfRebuild = Median(tfFrames);
   std::printf("bench rebuild_transfer_function_as4 %.4f s\n", tfRebuild);
-  std::printf("bench rebuild_light_move_as4 %.4f s\n", Median(lightFrames));
+  std::printf("bench rebuild_light_move_as4 %.4f s\n", lightRebuild);
+  std::printf("bench rebuild_transfer_function_asx4 %.4f s\n", tfRebuildX);
+  std::printf("bench rebuild_light_move_asx4 %.4f s\n", lightRebuildX);
 
   std::printf("ratio ea_over_vtk_ea %.3f\n", eaTimes.second / vtkTimes.second);
   std::printf("ratio as_over_ea %.3f\n", as1Times.second / eaTimes.second);
   std::printf("ratio as4_over_ea %.3f\n", as4Times.second / eaTimes.second);
   std::printf("ratio ao_over_ea %.3f\n", aoTimes.second / eaTimes.second);
   std::printf("ratio tf_rebuild_over_ea_frame %.3f\n", tfRebuild / eaTimes.second);
+  std::printf("ratio asx4_over_as4 %.3f\n", asx4Times.second / as4Times.second);
+  std::printf("ratio tf_rebuild_asx4_over_as4 %.3f\n", tfRebuildX / tfRebuild);
   if (!RunInteraction(b, lightGrid))
   {
     std::fprintf(stderr, "avs-bench-mappers: light volumes were rebuilt while interacting\n");

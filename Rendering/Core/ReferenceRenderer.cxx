@@ -3,6 +3,7 @@
 #include "AmbientOcclusion.h"
 #include "AveragedExtinction.h"
 #include "Classifier.h"
+#include "DiffuseFluence.h"
 #include "Extinction.h"
 #include "LightVolume.h"
 #include "Parallel.h"
@@ -68,6 +69,25 @@ inline double NearestLocalClamped(const Grid& g, const Vec3& local)
 }
 } // namespace
 
+std::vector<Grid> ComputeDiffuse(const Grid& averaged,
+  const std::vector<Light>& lights,
+  const std::vector<Grid>& lightVolumes,
+  const ScatteringParameters& p,
+  double* residual)
+{
+  DiffusionSettings settings;
+  settings.Albedo = p.Albedo;
+  settings.Anisotropy = p.Anisotropy;
+  settings.Iterations = p.DiffusionIterations;
+  settings.TransportLengthLimit = TransportLengthLimitInRadii * p.AmbientRadius;
+  const GridGeometry target =
+    DiffusionGeometry(averaged.Geometry, p.DiffusionVolumeMaximumDimension);
+  const Grid sigma = ResampleTrilinear(averaged, target);
+  const std::array<Grid, 3> q = DiffusionSource(averaged, lights, lightVolumes, target, settings);
+  std::array<Grid, 3> phi = SolveDiffusion(sigma, q, settings, residual);
+  return { std::move(phi[0]), std::move(phi[1]), std::move(phi[2]) };
+}
+
 bool Precompute(const VolumeScene& scene,
   const ScatteringParameters& p,
   const ScatteringTable* table,
@@ -131,7 +151,11 @@ bool Precompute(const VolumeScene& scene,
         out.Slice,
         p.AmbientRadius,
         nullptr,
-        [&](double v) { report(0.2 + 0.8 * (j + v) / n); }));
+        [&](double v) { report(0.2 + 0.7 * (j + v) / n); }));
+    }
+    if (p.Model == ScatteringModel::Extended)
+    {
+      out.Diffuse = ComputeDiffuse(out.Averaged, scene.Lights, out.LightVolumes, p);
     }
   }
   report(1.0);
@@ -270,6 +294,15 @@ void CastRay(const VolumeScene& scene,
     {
       // Emission (eq. 8.7).
       L = L + c * (T * (1.0 - p.Albedo) * sigmaT * p.EmissionWeight * dt);
+      // The extended model's diffuse light: albedo c phi / (4 pi) per unit optical depth, as
+      // the exact integral over the step of a source constant on it.
+      if (v.Diffuse.size() == 3 && sigmaT > 0.0)
+      {
+        const Vec3 phi{ SampleLocalClamped(v.Diffuse[0], x),
+          SampleLocalClamped(v.Diffuse[1], x),
+          SampleLocalClamped(v.Diffuse[2], x) };
+        L = L + Mul(c, phi) * (T * (1.0 - extinction) * p.Albedo / (4.0 * Pi));
+      }
       // Ambient in-scattering from the ball around x' (eqs. 8.8-8.9), weighted by the
       // transmittance r before x'. x' is a sample, lag + 1 steps on, and the transmittance r
       // before it lies between this sample's T before and after its extinction: interpolated

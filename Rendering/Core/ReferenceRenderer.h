@@ -65,12 +65,21 @@ struct PrecomputedVolumes
   Grid AveragedAtVoxels;          ///< Averaged interpolated at the voxels, as the rays read it
   std::vector<Grid> LightVolumes; ///< one per light (section 5)
   Grid Occlusion;                 ///< AO (section 7)
+  std::vector<Grid> Diffuse;      ///< extended model: RGB fluence phi (DiffuseFluence.h)
   ScatteringSlice Slice;          ///< A and F for the current g and albedo
 };
 
 /// sigma_t at every voxel of the scalars' grid, classified (Classifier::AtVoxel); 0 outside the
 /// scene's clip region.
 Grid ExtinctionGrid(const VolumeScene& scene);
+
+/// The extended model's diffuse fluence (DiffuseFluence.h, three grids: RGB) from the averaged
+/// extinction and the light volumes on the light grid.
+std::vector<Grid> ComputeDiffuse(const Grid& averaged,
+  const std::vector<Light>& lights,
+  const std::vector<Grid>& lightVolumes,
+  const ScatteringParameters& resolved,
+  double* residual = nullptr);
 
 /// Computes what `mode` needs (the table is needed for ambient scattering). Returns false and
 /// says why in `error` for unusable input.

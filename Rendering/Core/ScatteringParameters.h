@@ -19,6 +19,13 @@ enum class RenderMode
   AmbientScattering   ///< sections 3-6
 };
 
+/// Which model of ambient scattering (ARCHITECTURE.md, "Beyond the paper").
+enum class ScatteringModel
+{
+  Paper,   ///< ALGORITHM.md sections 3-6 as published
+  Extended ///< the paper's plus the diffuse fluence of a diffusion solve (DiffuseFluence.h)
+};
+
 struct ScatteringParameters
 {
   // Medium (section 1).
@@ -29,6 +36,11 @@ struct ScatteringParameters
   /// >= 0: multiplies every light's irradiance (VTK light units, E = 4 pi I c LightScale); applied
   /// where the VTK lights are translated (vtkAVSSceneTranslator::ToLights).
   double LightScale = 1.0;
+
+  // The extended model (DiffuseFluence.h).
+  ScatteringModel Model = ScatteringModel::Paper;
+  int DiffusionVolumeMaximumDimension = 64; ///< the diffusion grid: the light grid, capped
+  int DiffusionIterations = 64;             ///< red-black SOR sweeps of the diffusion solve
 
   // Ambient occlusion (section 7).
   double OcclusionRadius = 0.0;   ///< R in data units; 0: the ambient radius
@@ -85,6 +97,8 @@ struct ScatteringParameters
     p.TerminationTransmittance = std::clamp(p.TerminationTransmittance, 0.0, 1.0);
     p.LightVolumeMaximumDimension = std::max(2, p.LightVolumeMaximumDimension);
     p.OcclusionVolumeMaximumDimension = std::max(2, p.OcclusionVolumeMaximumDimension);
+    p.DiffusionVolumeMaximumDimension = std::max(2, p.DiffusionVolumeMaximumDimension);
+    p.DiffusionIterations = std::clamp(p.DiffusionIterations, 0, 4096);
     return p;
   }
 };

@@ -106,6 +106,11 @@ std::string ProgramDefines(const vtkAVSRayCaster::Frame& frame,
   defines += ring > vtkAVSRayCaster::MaximumRingSize
     ? "#define AVS_LOOKAHEAD_EXPLICIT\n"
     : "#define AVS_RING " + std::to_string(ring) + "\n";
+  // The extended model: one more fetch per sample, of the diffuse fluence (vtkAVSDiffuseVolume).
+  if (p.Model == avs::ScatteringModel::Extended)
+  {
+    defines += "#define AVS_DIFFUSE\n";
+  }
   // Light-volume textures to fetch: lights 0-3, 4-7.
   const int n = static_cast<int>(frame.Lights.size());
   defines +=
@@ -189,6 +194,7 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
     t = nullptr;
   }
   this->LightTextureDimensions = { 0, 0, 0 };
+  this->Diffuse.ReleaseGraphicsResources(window); // the extended model
   // The depth-copy framebuffer belongs to the context too (kept, it would bind a deleted
   // window's context in the next one).
   if (this->DepthFramebuffer && window)
@@ -1185,6 +1191,16 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     program->SetUniform2f("u_tableSize", this->TableSize);
     program->SetUniformf("u_tableTauMaximum", this->TableTauMaximum);
     program->SetUniformf("u_ambientRadius", static_cast<float>(p.AmbientRadius));
+    // The extended model (vtkAVSDiffuseVolume).
+    if (p.Model == avs::ScatteringModel::Extended)
+    {
+      if (!this->Diffuse.IsReady())
+      {
+        error = "the diffuse fluence is not uploaded";
+        return false;
+      }
+      this->Diffuse.Bind(program);
+    }
   }
 
   // The render passes attached to the volume set what they need (vtkSSAOPass: the colour
@@ -1223,6 +1239,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   }
 
   this->Classification.Unbind();
+  this->Diffuse.Unbind(); // the extended model
   for (vtkTextureObject* t : { this->Depth.Get(),
          this->Scalars.Get(),
          this->Occlusion.Get(),
@@ -1242,4 +1259,15 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     return false;
   }
   return true;
+}
+
+// The extended model's GPU diffusion solve (vtkAVSDiffuseVolume) reads these.
+vtkTextureObject* vtkAVSRayCaster::GetAveragedExtinctionTexture() const
+{
+  return this->AveragedExtinction;
+}
+
+vtkTextureObject* vtkAVSRayCaster::GetLightVolumeTexture(int t) const
+{
+  return t >= 0 && t < NumberOfLightTextures ? this->LightVolumes[t].Get() : nullptr;
 }

@@ -18,6 +18,7 @@
 #include "ScatteringTable.h"
 #include "TransferFunction.h"
 #include "vtkAVSClassification.h"
+#include "vtkAVSDiffuseVolume.h"
 #include "vtkAVSShaderOptions.h"
 
 #include "vtkAVSImageSampler.h"
@@ -118,6 +119,13 @@ public:
     std::string& error);
   bool UploadOcclusion(const avs::Grid& occlusion, std::string& error);
   bool UploadTableSlice(const avs::ScatteringSlice& slice, std::string& error);
+  /// The extended model's diffuse fluence (vtkAVSDiffuseVolume), bound when the frame's
+  /// parameters ask for the extended model.
+  vtkAVSDiffuseVolume& GetDiffuseVolume() { return this->Diffuse; }
+  /// What the GPU diffusion solve reads: the averaged extinction and the packed light volumes
+  /// on the light grid (null where absent).
+  vtkTextureObject* GetAveragedExtinctionTexture() const;
+  vtkTextureObject* GetLightVolumeTexture(int t) const;
 
   struct Frame
   {
@@ -184,6 +192,7 @@ private:
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   vtkSmartPointer<vtkTextureObject> Scalars, Occlusion, Table, Depth;
   vtkAVSClassification Classification;
+  vtkAVSDiffuseVolume Diffuse; ///< the extended model's fluence
   /// The layout the scalars were uploaded with (vtkAVSClassification::Layout).
   vtkAVSClassification::Layout ScalarLayout;
   std::vector<float> LogGain; ///< log(F(tau) exp(2 tau)) on the table's tau nodes

@@ -47,6 +47,13 @@ uniform float u_tableTauMaximum;
 uniform float u_albedo;
 uniform float u_ambientRadius;
 uniform float u_emissionWeight;
+#ifdef AVS_DIFFUSE
+// The extended model (ARCHITECTURE.md, "Beyond the paper"): the diffuse fluence phi (RGB) on
+// the diffusion grid, from the diffusion solve (Core/DiffuseFluence.h).
+uniform sampler3D u_diffuse;
+uniform vec3 u_diffuseDimensions;
+vec3 g_diffuseScale, g_diffuseOffset;
+#endif
 
 int g_lag;           // k = floor(r / dt)
 float g_lagFraction; // f = r / dt - k
@@ -173,6 +180,10 @@ bool EffectContinues(float T, int i)
   g_tableScale = (u_tableSize - 1.0) / u_tableSize;
   g_tableOffset = 0.5 / u_tableSize;
   g_tauScale = 1.0 / log(1.0 + u_tableTauMaximum);
+#ifdef AVS_DIFFUSE
+  g_diffuseScale = (u_diffuseDimensions - 1.0) / ((u_dimensions - 1.0) * u_diffuseDimensions);
+  g_diffuseOffset = 0.5 / u_diffuseDimensions;
+#endif
 #define AVS_THETA_COORDINATE(j) g_thetaCoordinate[j] = ThetaCoordinate(dot(u_lightAxis[j], -direction));
   AVS_FOR_EACH_LIGHT(AVS_THETA_COORDINATE)
 #ifdef AVS_TABLE_COLUMN
@@ -180,6 +191,15 @@ bool EffectContinues(float T, int i)
   AVS_FOR_EACH_LIGHT(AVS_FILL_COLUMN)
 #endif
 //AVS::Effect::Sample
+#ifdef AVS_DIFFUSE
+    // The extended model's diffuse light at the sample itself: albedo c phi / (4 pi) per unit
+    // optical depth, integrated exactly over the step (T (1 - exp(-sigma_t dt))).
+    if (here.a > 0.0 && T >= u_termination)
+    {
+      vec3 phi = textureLod(u_diffuse, index * g_diffuseScale + g_diffuseOffset, 0.0).rgb;
+      L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * here.rgb * phi;
+    }
+#endif
 #ifdef AVS_EMISSION
     if (T >= u_termination)
     {

@@ -3,8 +3,10 @@
 // from outside, from inside the volume (with a spot light and a headlight added) and in parallel
 // projection (with light volumes coarser than the data); and a fourth view with five lights (two
 // light-volume textures), AO with direct light, emission in AO and ambient scattering, and an
-// ambient radius too large for the ring buffer (the explicit look-ahead). Metric: PSNR over the RGB
-// picture; threshold 35 dB.
+// ambient radius too large for the ring buffer (the explicit look-ahead). Ambient scattering in
+// both models: the paper's and the extended one (its diffusion solve on the CPU, its extra
+// per-sample term in the shader), which must also be brighter than the paper's. Metric: PSNR
+// over the RGB picture; threshold 35 dB.
 #include "MapperTestScene.h"
 #include "TestErrorObserver.h"
 
@@ -42,8 +44,13 @@ int main(int argc, char* argv[])
   as->SetAmbientRadius(0.08);
   as->SetAnisotropy(0.4);
   as->SetAlbedo(0.9);
-  vtkAVSVolumeMapper* mappers[3] = { ea, ao, as };
-  const char* names[3] = { "ea", "ao", "as" };
+  vtkNew<vtkAmbientScatteringVolumeMapper> asx;
+  asx->SetAnisotropy(0.4);
+  asx->SetAlbedo(0.9);
+  asx->SetScatteringModelToExtended();
+  vtkAVSVolumeMapper* mappers[4] = { ea, ao, as, asx };
+  const char* names[4] = { "ea", "ao", "as", "asx" };
+  vtkAmbientScatteringVolumeMapper* scattering[2] = { as, asx };
 
   // Three views: perspective from outside (a directional and a point light); the camera inside
   // the volume (plus a spot light and a headlight); parallel projection.
@@ -98,7 +105,8 @@ int main(int argc, char* argv[])
       direct = 0.5;
       emission = 0.8;
     }
-    for (int m = 0; m < 3; ++m)
+    double paperBrightness = 0.0;
+    for (int m = 0; m < 4; ++m)
     {
       vtkAVSVolumeMapper* mapper = mappers[m];
       vtkNew<TestErrorObserver> errors;
@@ -106,14 +114,17 @@ int main(int argc, char* argv[])
       mapper->SetInputData(volumeData);
       mapper->SetSampleDistance(step);
       mapper->UseJitteringOff();
-      as->SetAmbientRadius(radius);
-      // Parallel view: light volumes, averaged extinction and occlusion on grids coarser than
-      // the data.
-      as->SetLightVolumeMaximumDimension(view == 2 ? 24 : 256);
+      for (vtkAmbientScatteringVolumeMapper* s : scattering)
+      {
+        s->SetAmbientRadius(radius);
+        // Parallel view: light volumes, averaged extinction and occlusion on grids coarser than
+        // the data.
+        s->SetLightVolumeMaximumDimension(view == 2 ? 24 : 256);
+        s->SetEmissionWeight(emission);
+      }
       ao->SetOcclusionVolumeMaximumDimension(view == 2 ? 20 : 256);
       ao->SetDirectLightWeight(direct);
       ao->SetEmissionWeight(emission);
-      as->SetEmissionWeight(emission);
       vtkNew<vtkVolume> volume;
       volume->SetMapper(mapper);
       volume->SetProperty(property);
@@ -122,6 +133,10 @@ int main(int argc, char* argv[])
       auto gpu = Grab(window);
       renderer->RemoveVolume(volume);
       AVS_CHECK(errors->Errors == 0);
+      if (m == 3)
+      {
+        AVS_CHECK(asx->GetNumberOfDiffusionRebuilds() >= 1);
+      }
       if (m == 2 && std::getenv("AVS_EXPECT_CPU_PRECOMPUTATION"))
       {
         AVS_CHECK(!as->GetLightVolumesOnGPU()); // the context really has no compute shaders
@@ -135,13 +150,18 @@ int main(int argc, char* argv[])
       reference->SetSampleDistance(step);
       reference->SetDirectLightWeight(direct);
       reference->SetEmissionWeight(emission);
-      reference->SetRenderMode(m);
+      reference->SetRenderMode(m == 3 ? 2 : m);
+      if (m == 3)
+      {
+        reference->SetScatteringModelToExtended();
+      }
       reference->SetOcclusionRadius(0.15);
       reference->SetAmbientRadius(radius);
       reference->SetLightVolumeMaximumDimension(view == 2 ? 24 : 256);
       reference->SetOcclusionVolumeMaximumDimension(view == 2 ? 20 : 256);
       // The AO mapper's direct light scatters with albedo 1 and g = 0.
       reference->SetAnisotropy(m == 1 ? 0.0 : 0.4);
+      // (the reference renderer's model: the paper's unless m == 3)
       reference->SetAlbedo(m == 1 ? 1.0 : 0.9);
       reference->Update();
       const double psnr = Psnr(gpu, reference->GetOutput());
@@ -157,6 +177,15 @@ int main(int argc, char* argv[])
       }
       AVS_CHECK(Brightness(gpu) > 1000.0);
       AVS_CHECK(psnr >= 35.0);
+      if (m == 2)
+      {
+        paperBrightness = Brightness(gpu);
+      }
+      if (m == 3)
+      {
+        // The diffuse light adds to the paper's model.
+        AVS_CHECK(Brightness(gpu) > 1.02 * paperBrightness);
+      }
     }
     camera->ParallelProjectionOff();
   }

@@ -34,6 +34,18 @@ def main():
     check(len(errors) == 1, "no error event for a missing file")
     check(table.IsLoaded(), "the loaded table was dropped")
 
+    # The scattering model (paper / extended), by its Python-visible names.
+    for cls in (ambientscattering.vtkAmbientScatteringVolumeMapper,
+                ambientscattering.vtkVolumeReferenceRenderer):
+        m = cls()
+        check(m.GetScatteringModel() == cls.PaperModel == 0, "the paper's model is not the default")
+        m.SetScatteringModelToExtended()
+        check(m.GetScatteringModel() == cls.ExtendedModel == 1, "no extended model")
+        check(m.GetScatteringModelAsString() == "Extended", "model name")
+        check("ScatteringModel: Extended" in str(m), "PrintSelf lacks the model")
+        m.SetScatteringModel(7)
+        check(m.GetScatteringModel() == cls.ExtendedModel, "the model is not clamped")
+
     if failures:
         print("FAILED:", *failures, sep="\n  ")
         return 1

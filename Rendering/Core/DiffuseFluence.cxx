@@ -1,0 +1,203 @@
+#include "DiffuseFluence.h"
+
+#include "GridFill.h"
+#include "Parallel.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace avs
+{
+
+GridGeometry DiffusionGeometry(const GridGeometry& data, int maximum)
+{
+  return data.Capped(std::max(2, maximum));
+}
+
+std::array<Grid, 3> DiffusionSource(const Grid& averaged,
+  const std::vector<Light>& lights,
+  const std::vector<Grid>& lightVolumes,
+  const GridGeometry& target,
+  const DiffusionSettings& settings)
+{
+  const double weight = settings.Albedo * (1.0 - settings.Anisotropy);
+  std::array<Grid, 3> q{ Grid(target), Grid(target), Grid(target) };
+  const auto& n = target.Dimensions;
+  ParallelFor(n[2],
+    [&](std::int64_t b, std::int64_t e)
+    {
+      for (std::int64_t k = b; k < e; ++k)
+        for (int j = 0; j < n[1]; ++j)
+          for (int i = 0; i < n[0]; ++i)
+          {
+            const Vec3 world = target.IndexToWorld(
+              { static_cast<double>(i), static_cast<double>(j), static_cast<double>(k) });
+            const double sigma = averaged.SampleWorld(world);
+            Vec3 e{ 0, 0, 0 };
+            if (sigma > 0.0)
+            {
+              for (std::size_t l = 0; l < lights.size() && l < lightVolumes.size(); ++l)
+              {
+                e = e + lights[l].FreeIrradiance(world) * lightVolumes[l].SampleWorld(world);
+              }
+            }
+            const std::size_t index = target.Index(i, j, static_cast<int>(k));
+            for (int c = 0; c < 3; ++c)
+            {
+              q[c].Values[index] = static_cast<float>(weight * sigma * e[c]);
+            }
+          }
+    });
+  return q;
+}
+
+namespace
+{
+// The discrete operator of one cell: the diagonal and the couplings to its six neighbours
+// (0 where the neighbour is vacuum or outside the grid; their Marshak leak is in the diagonal).
+struct Cell
+{
+  double Diagonal = 0.0;              ///< 0: a vacuum cell (phi = 0)
+  double K[6] = { 0, 0, 0, 0, 0, 0 }; ///< -x, +x, -y, +y, -z, +z
+};
+
+std::vector<Cell> Operator(const Grid& averaged, const DiffusionSettings& s)
+{
+  const GridGeometry& g = averaged.Geometry;
+  const auto& n = g.Dimensions;
+  const double reduced = 1.0 - s.Albedo * s.Anisotropy; // sigma' / sigma~t
+  const double absorbing = 1.0 - s.Albedo;              // sigma_a / sigma~t
+  // D per cell, 0 for vacuum; the transport mean free path 1 / sigma' at most
+  // TransportLengthLimit (a flux limiter: diffusion has no meaning beyond it).
+  const double floor = 1.0 / std::max(1e-30, s.TransportLengthLimit);
+  const double meanSpacing = (g.Spacing.x + g.Spacing.y + g.Spacing.z) / 3.0;
+  std::vector<double> d(g.NumberOfPoints(), 0.0);
+  for (std::size_t c = 0; c < d.size(); ++c)
+  {
+    const double sigma = reduced * std::max(0.0, static_cast<double>(averaged.Values[c]));
+    d[c] = sigma * meanSpacing >= VacuumOpticalDepth ? 1.0 / (3.0 * std::max(sigma, floor)) : 0.0;
+  }
+  std::vector<Cell> cells(d.size());
+  ParallelFor(n[2],
+    [&](std::int64_t b, std::int64_t e)
+    {
+      for (std::int64_t kk = b; kk < e; ++kk)
+        for (int j = 0; j < n[1]; ++j)
+          for (int i = 0; i < n[0]; ++i)
+          {
+            const int k = static_cast<int>(kk);
+            const std::size_t c = g.Index(i, j, k);
+            if (!(d[c] > 0.0))
+            {
+              continue;
+            }
+            Cell& cell = cells[c];
+            cell.Diagonal = absorbing * std::max(0.0, static_cast<double>(averaged.Values[c]));
+            const int idx[3] = { i, j, k };
+            for (int f = 0; f < 6; ++f)
+            {
+              const int axis = f / 2;
+              const int step = (f % 2) ? 1 : -1;
+              int m[3] = { idx[0], idx[1], idx[2] };
+              m[axis] += step;
+              const double h = g.Spacing[axis];
+              const bool inside = m[axis] >= 0 && m[axis] < n[axis];
+              const double dn = inside ? d[g.Index(m[0], m[1], m[2])] : 0.0;
+              if (dn > 0.0)
+              {
+                cell.K[f] = 2.0 * d[c] * dn / (d[c] + dn) / (h * h);
+                cell.Diagonal += cell.K[f];
+              }
+              else
+              {
+                // Marshak: phi = 2 D dphi/dn at the face, phi = 0 beyond it.
+                cell.Diagonal += d[c] / (2.0 * d[c] + 0.5 * h) / h;
+              }
+            }
+          }
+    });
+  return cells;
+}
+} // namespace
+
+std::array<Grid, 3> SolveDiffusion(const Grid& averaged,
+  const std::array<Grid, 3>& source,
+  const DiffusionSettings& s,
+  double* residual)
+{
+  const GridGeometry& g = averaged.Geometry;
+  const auto& n = g.Dimensions;
+  const std::vector<Cell> cells = Operator(averaged, s);
+  const std::ptrdiff_t stride[6] = { -1,
+    1,
+    -static_cast<std::ptrdiff_t>(n[0]),
+    n[0],
+    -static_cast<std::ptrdiff_t>(n[0]) * n[1],
+    static_cast<std::ptrdiff_t>(n[0]) * n[1] };
+  const double omega = std::clamp(s.Relaxation, 0.05, 1.95);
+  std::array<Grid, 3> phi{ Grid(g), Grid(g), Grid(g) };
+  for (int c = 0; c < 3; ++c)
+  {
+    const std::vector<float>& q = source[c].Values;
+    std::vector<float>& p = phi[c].Values;
+    for (int it = 0; it < s.Iterations; ++it)
+    {
+      for (int colour = 0; colour < 2; ++colour)
+      {
+        ParallelFor(n[2],
+          [&](std::int64_t b, std::int64_t e)
+          {
+            for (std::int64_t k = b; k < e; ++k)
+              for (int j = 0; j < n[1]; ++j)
+                for (int i = (static_cast<int>(k) + j + colour) % 2; i < n[0]; i += 2)
+                {
+                  const std::size_t index = g.Index(i, j, static_cast<int>(k));
+                  const Cell& cell = cells[index];
+                  if (!(cell.Diagonal > 0.0))
+                  {
+                    continue;
+                  }
+                  double sum = q[index];
+                  for (int f = 0; f < 6; ++f)
+                  {
+                    if (cell.K[f] > 0.0)
+                    {
+                      sum += cell.K[f] * p[static_cast<std::ptrdiff_t>(index) + stride[f]];
+                    }
+                  }
+                  p[index] =
+                    static_cast<float>((1.0 - omega) * p[index] + omega * sum / cell.Diagonal);
+                }
+          });
+      }
+    }
+  }
+  if (residual)
+  {
+    double r = 0.0, norm = 0.0;
+    const std::vector<float>& q = source[0].Values;
+    const std::vector<float>& p = phi[0].Values;
+    for (std::size_t index = 0; index < cells.size(); ++index)
+    {
+      const Cell& cell = cells[index];
+      if (!(cell.Diagonal > 0.0))
+      {
+        continue;
+      }
+      double a = cell.Diagonal * p[index];
+      for (int f = 0; f < 6; ++f)
+      {
+        if (cell.K[f] > 0.0)
+        {
+          a -= cell.K[f] * p[static_cast<std::ptrdiff_t>(index) + stride[f]];
+        }
+      }
+      r += std::abs(q[index] - a);
+      norm += std::abs(q[index]);
+    }
+    *residual = norm > 0.0 ? r / norm : 0.0;
+  }
+  return phi;
+}
+
+} // namespace avs

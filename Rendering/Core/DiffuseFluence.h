@@ -1,0 +1,64 @@
+// The extended model's long-range multiple scattering (ARCHITECTURE.md, "Beyond the paper"):
+// the diffuse fluence phi of the light the tubes lose to scattering, from the diffusion
+// equation on a coarse grid, solved by a fixed number of red-black SOR sweeps.
+//
+//   -div(D grad phi) + sigma_a phi = q,   D = 1 / (3 sigma'),   sigma' = sigma~t (1 - albedo g),
+//   sigma_a = (1 - albedo) sigma~t,       q = albedo (1 - g) sigma~t sum_j E_j^free T~_j,
+//
+// with sigma~t the averaged extinction (section 3), T~_j the light volumes (section 5) and
+// E_j^free the lights' free irradiance (RGB: phi has three channels). D is limited to
+// TransportLengthLimit / 3; cells with sigma' h < VacuumOpticalDepth are vacuum; a face between the
+// medium and vacuum (or the grid's border) carries Marshak's condition phi = 2 D dphi/dn. The ray
+// caster adds T (1 - exp(-sigma_t dt)) albedo c phi / (4 pi) per sample.
+#ifndef avs_DiffuseFluence_h
+#define avs_DiffuseFluence_h
+
+#include "Grid.h"
+#include "Lights.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace avs
+{
+
+struct DiffusionSettings
+{
+  double Albedo = 0.9;
+  double Anisotropy = 0.0;
+  int Iterations = 64;               ///< red-black SOR sweeps (each: red then black cells)
+  double Relaxation = 1.85;          ///< SOR factor omega in (0, 2)
+  double TransportLengthLimit = 1.0; ///< 1 / sigma' at most (world units; 8 r in the renderers)
+};
+
+/// Cells whose reduced optical depth sigma' h (h the mean spacing) is below this are vacuum:
+/// rounding in the averaged extinction's sums leaves traces of ~1e-7 in empty space, which must
+/// not become a conducting medium.
+constexpr double VacuumOpticalDepth = 1e-3;
+
+/// The transport mean free path limit of the renderers, in ambient radii.
+constexpr double TransportLengthLimitInRadii = 16.0;
+
+/// The diffusion grid: the light grid (or any grid over the data's lattice box) capped at
+/// `maximum` points per axis.
+GridGeometry DiffusionGeometry(const GridGeometry& data, int maximum);
+
+/// The source q (RGB, three grids on `target`) from the averaged extinction and the light volumes
+/// (all on the light grid) and the lights.
+std::array<Grid, 3> DiffusionSource(const Grid& averaged,
+  const std::vector<Light>& lights,
+  const std::vector<Grid>& lightVolumes,
+  const GridGeometry& target,
+  const DiffusionSettings& settings);
+
+/// phi (RGB) on the source's grid. `averaged` is the averaged extinction on the same grid.
+/// `residual`, if given, receives the final relative residual |q - A phi|_1 / |q|_1 (channel 0).
+std::array<Grid, 3> SolveDiffusion(const Grid& averaged,
+  const std::array<Grid, 3>& source,
+  const DiffusionSettings& settings,
+  double* residual = nullptr);
+
+} // namespace avs
+
+#endif

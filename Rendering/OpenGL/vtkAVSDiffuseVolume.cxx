@@ -1,0 +1,312 @@
+#include "vtkAVSDiffuseVolume.h"
+
+#include "DiffuseFluence.h"
+#include "vtkAVSRenderPasses.h"
+#include "vtkAVSShaders.h"
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkAVSDiffuseVolume::vtkAVSDiffuseVolume() = default;
+
+vtkAVSDiffuseVolume::~vtkAVSDiffuseVolume() = default;
+
+bool vtkAVSDiffuseVolume::Upload(vtkOpenGLRenderWindow* window,
+  const std::vector<avs::Grid>& phi,
+  std::string& error)
+{
+  if (phi.size() != 3 || phi[0].Values.size() != phi[0].Geometry.NumberOfPoints() ||
+    phi[1].Values.size() != phi[0].Values.size() || phi[2].Values.size() != phi[0].Values.size())
+  {
+    error = "the diffuse fluence is not three grids of one size";
+    return false;
+  }
+  const std::array<int, 3> d = phi[0].Geometry.Dimensions;
+  const std::size_t n = phi[0].Values.size();
+  std::vector<float> packed(4 * n, 0.0f);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      packed[4 * i + c] = phi[c].Values[i];
+    }
+  }
+  if (!this->Allocate(window, this->Texture, d, packed.data(), error))
+  {
+    return false;
+  }
+  this->Dimensions = d;
+  return true;
+}
+
+bool vtkAVSDiffuseVolume::Allocate(vtkOpenGLRenderWindow* window,
+  vtkSmartPointer<vtkTextureObject>& texture,
+  const std::array<int, 3>& d,
+  const float* data,
+  std::string& error)
+{
+  if (texture && !data && texture->GetWidth() == static_cast<unsigned int>(d[0]) &&
+    texture->GetHeight() == static_cast<unsigned int>(d[1]) &&
+    texture->GetDepth() == static_cast<unsigned int>(d[2]))
+  {
+    return true; // written on the GPU: the storage is reused
+  }
+  if (texture)
+  {
+    texture->ReleaseGraphicsResources(window);
+  }
+  texture = vtkSmartPointer<vtkTextureObject>::New();
+  texture->SetContext(window);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->SetWrapR(vtkTextureObject::ClampToEdge);
+  texture->SetMinificationFilter(vtkTextureObject::Linear);
+  texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  texture->SetInternalFormat(GL_RGBA32F);
+  vtkAVSRenderPasses::DiscardErrors();
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  if (!texture->Create3DFromRaw(static_cast<unsigned int>(d[0]),
+        static_cast<unsigned int>(d[1]),
+        static_cast<unsigned int>(d[2]),
+        4,
+        VTK_FLOAT,
+        const_cast<float*>(data)) ||
+    glGetError() != GL_NO_ERROR)
+  {
+    error = "the GPU could not allocate the diffuse-fluence texture (" + std::to_string(d[0]) +
+      " x " + std::to_string(d[1]) + " x " + std::to_string(d[2]) + ")";
+    texture->ReleaseGraphicsResources(window);
+    texture = nullptr;
+    return false;
+  }
+  return true;
+}
+
+namespace
+{
+unsigned int BuildProgram(const std::string& source)
+{
+  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+  const char* text = source.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok)
+  {
+    char log[2048] = {};
+    glGetShaderInfoLog(shader, sizeof(log) - 1, nullptr, log);
+    vtkGenericWarningMacro("The diffusion compute shader did not compile. " << log);
+    glDeleteShader(shader);
+    return 0;
+  }
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, shader);
+  glLinkProgram(program);
+  glDeleteShader(shader);
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok)
+  {
+    glDeleteProgram(program);
+    return 0;
+  }
+  return program;
+}
+} // namespace
+
+bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
+  const avs::GridGeometry& grid,
+  const std::array<int, 3>& lightDimensions,
+  vtkTextureObject* averaged,
+  vtkTextureObject* lights0,
+  vtkTextureObject* lights1,
+  const std::vector<avs::Light>& lights,
+  const avs::ScatteringParameters& p,
+  std::string& error)
+{
+  const int n = static_cast<int>(std::min<std::size_t>(lights.size(), 8));
+  if (!averaged || (n > 0 && !lights0) || (n > 4 && !lights1))
+  {
+    error = "the diffusion solve needs the averaged extinction and the light volumes on the GPU";
+    return false;
+  }
+  // The program for these lights' kinds (avs_lights.glsl's defines).
+  int positional = 0;
+  bool spot = false;
+  for (int j = 0; j < n; ++j)
+  {
+    if (lights[j].Type == avs::LightType::Positional)
+    {
+      positional |= 1 << j;
+      spot = spot || lights[j].IsSpot();
+    }
+  }
+  const std::string defines = "#define AVS_NUMBER_OF_LIGHTS " + std::to_string(n) +
+    "\n#define AVS_POSITIONAL_LIGHTS " + std::to_string(positional) + "\n" +
+    (spot ? "#define AVS_SPOT_LIGHTS\n" : "");
+  if (!this->Program || defines != this->ProgramDefines)
+  {
+    if (this->Program)
+    {
+      glDeleteProgram(this->Program);
+    }
+    std::string source = avs_diffusion_cs;
+    const std::size_t line = source.find('\n') + 1; // after #version
+    source.insert(line, defines + avs_lights + "\n");
+    this->Program = BuildProgram(source);
+    this->ProgramDefines = this->Program ? defines : std::string();
+    if (!this->Program)
+    {
+      error = "the diffusion compute shader did not build";
+      return false;
+    }
+  }
+  const std::array<int, 3> d = grid.Dimensions;
+  if (!this->Allocate(window, this->Texture, d, nullptr, error) ||
+    !this->Allocate(window, this->Source, d, nullptr, error))
+  {
+    return false;
+  }
+  this->Dimensions = d;
+
+  const GLuint program = this->Program;
+  vtkAVSRenderPasses::DiscardErrors();
+  window->GetShaderCache()->ReleaseCurrentShader();
+  glUseProgram(program);
+  auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
+  // Lights in the data's local frame (a rigid map of the data's frame: distances and cones
+  // stay).
+  float position[8][3] = {}, axis[8][3] = {}, irradiance[8][3] = {}, attenuation[8][3] = {};
+  float coneCos[8] = {}, exponent[8] = {};
+  for (int j = 0; j < n; ++j)
+  {
+    const avs::Light& l = lights[j];
+    const avs::Vec3 x = grid.WorldToLocal(l.Position);
+    const avs::Vec3 a = grid.WorldToLocalDirection(avs::Normalize(l.FocalPoint - l.Position));
+    for (int k = 0; k < 3; ++k)
+    {
+      position[j][k] = static_cast<float>(x[k]);
+      axis[j][k] = static_cast<float>(a[k]);
+      irradiance[j][k] = static_cast<float>(l.Irradiance[k]);
+      attenuation[j][k] = static_cast<float>(l.Attenuation[k]);
+    }
+    coneCos[j] = l.IsSpot() ? static_cast<float>(std::cos(l.ConeAngle * avs::Pi / 180.0)) : -2.0f;
+    exponent[j] = l.IsSpot() ? static_cast<float>(l.Exponent) : 0.0f;
+  }
+  glUniform3fv(location("u_lightPosition"), 8, &position[0][0]);
+  glUniform3fv(location("u_lightAxis"), 8, &axis[0][0]);
+  glUniform3fv(location("u_lightIrradiance"), 8, &irradiance[0][0]);
+  glUniform3fv(location("u_lightAttenuation"), 8, &attenuation[0][0]);
+  glUniform1fv(location("u_lightConeCos"), 8, coneCos);
+  glUniform1fv(location("u_lightExponent"), 8, exponent);
+  glUniform3i(location("u_dimensions"), d[0], d[1], d[2]);
+  glUniform3f(location("u_spacing"),
+    static_cast<float>(grid.Spacing.x),
+    static_cast<float>(grid.Spacing.y),
+    static_cast<float>(grid.Spacing.z));
+  glUniform3f(location("u_lightDimensions"),
+    static_cast<float>(lightDimensions[0]),
+    static_cast<float>(lightDimensions[1]),
+    static_cast<float>(lightDimensions[2]));
+  glUniform1f(location("u_albedo"), static_cast<float>(p.Albedo));
+  glUniform1f(location("u_anisotropy"), static_cast<float>(p.Anisotropy));
+  glUniform1f(location("u_relaxation"), static_cast<float>(avs::DiffusionSettings().Relaxation));
+  glUniform1f(location("u_transportLimit"),
+    static_cast<float>(avs::TransportLengthLimitInRadii * p.AmbientRadius));
+  glUniform1f(location("u_vacuum"),
+    static_cast<float>(
+      avs::VacuumOpticalDepth * 3.0 / (grid.Spacing.x + grid.Spacing.y + grid.Spacing.z)));
+  averaged->Activate();
+  glUniform1i(location("u_averaged"), averaged->GetTextureUnit());
+  vtkTextureObject* first = lights0 ? lights0 : averaged;
+  vtkTextureObject* second = lights1 ? lights1 : first;
+  first->Activate();
+  glUniform1i(location("u_lightVolumes0"), first->GetTextureUnit());
+  if (second != first)
+  {
+    second->Activate();
+  }
+  glUniform1i(location("u_lightVolumes1"), second->GetTextureUnit());
+  glBindImageTexture(0, this->Texture->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glBindImageTexture(1, this->Source->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+  const GLuint groups[3] = { static_cast<GLuint>((d[0] + 7) / 8),
+    static_cast<GLuint>((d[1] + 7) / 8),
+    static_cast<GLuint>(d[2]) };
+  glUniform1i(location("u_stage"), 0);
+  glDispatchCompute(groups[0], groups[1], groups[2]);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glUniform1i(location("u_stage"), 1);
+  for (int it = 0; it < p.DiffusionIterations; ++it)
+  {
+    for (int colour = 0; colour < 2; ++colour)
+    {
+      glUniform1i(location("u_colour"), colour);
+      glDispatchCompute(groups[0], groups[1], groups[2]);
+      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
+  }
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glUseProgram(0);
+  averaged->Deactivate();
+  first->Deactivate();
+  if (second != first)
+  {
+    second->Deactivate();
+  }
+  if (const GLenum status = glGetError())
+  {
+    error = "OpenGL error " + std::to_string(status) + " in the diffusion solve";
+    return false;
+  }
+  return true;
+}
+
+void vtkAVSDiffuseVolume::Bind(vtkShaderProgram* program)
+{
+  if (!this->Texture)
+  {
+    return;
+  }
+  this->Texture->Activate();
+  program->SetUniformi("u_diffuse", this->Texture->GetTextureUnit());
+  const float d[3] = { static_cast<float>(this->Dimensions[0]),
+    static_cast<float>(this->Dimensions[1]),
+    static_cast<float>(this->Dimensions[2]) };
+  program->SetUniform3f("u_diffuseDimensions", d);
+}
+
+void vtkAVSDiffuseVolume::Unbind()
+{
+  if (this->Texture && this->Texture->GetTextureUnit() >= 0)
+  {
+    this->Texture->Deactivate();
+  }
+}
+
+void vtkAVSDiffuseVolume::ReleaseGraphicsResources(vtkWindow* window)
+{
+  for (auto* t : { &this->Texture, &this->Source })
+  {
+    if (*t)
+    {
+      (*t)->ReleaseGraphicsResources(window);
+    }
+    *t = nullptr;
+  }
+  // Without a window its context took the program with it: the name is only forgotten.
+  if (this->Program && window)
+  {
+    glDeleteProgram(this->Program);
+  }
+  this->Program = 0;
+  this->ProgramDefines.clear();
+  this->Dimensions = { 0, 0, 0 };
+}

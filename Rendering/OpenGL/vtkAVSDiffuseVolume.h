@@ -1,0 +1,74 @@
+/**
+ * @class   vtkAVSDiffuseVolume
+ * @brief   the extended model's diffuse fluence on the GPU (private)
+ *
+ * Holds the RGB fluence phi of the extended model (Core/DiffuseFluence.h) as a 3D texture on
+ * the diffusion grid, uploaded from the core's CPU solve or computed on the GPU by the same
+ * solve (avs_diffusion_cs.glsl, OpenGL 4.3), and binds it for the ray-casting program
+ * (avs_as_effect.glsl, AVS_DIFFUSE: u_diffuse, u_diffuseDimensions). Kept apart from
+ * vtkAVSRayCaster, which only owns one and calls Bind / Unbind / ReleaseGraphicsResources.
+ */
+#ifndef vtkAVSDiffuseVolume_h
+#define vtkAVSDiffuseVolume_h
+
+#include "Grid.h"
+#include "Lights.h"
+#include "ScatteringParameters.h"
+
+#include "vtkSmartPointer.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+class vtkAVSDiffuseVolume
+{
+public:
+  vtkAVSDiffuseVolume();
+  ~vtkAVSDiffuseVolume();
+  vtkAVSDiffuseVolume(const vtkAVSDiffuseVolume&) = delete;
+  vtkAVSDiffuseVolume& operator=(const vtkAVSDiffuseVolume&) = delete;
+
+  /// Uploads phi (three grids on one geometry: R, G, B) into the texture of `window`'s context.
+  bool Upload(vtkOpenGLRenderWindow* window, const std::vector<avs::Grid>& phi, std::string& error);
+  /// The same solve on the GPU (the caller checked for compute shaders): the source from the
+  /// averaged extinction and the packed light volumes on the light grid (textures of the ray
+  /// caster; `lights1` may be null for up to four lights), then `resolved.DiffusionIterations`
+  /// red-black SOR sweeps, into the texture on `grid` (DiffusionGeometry). `lights` are in the
+  /// data's frame, as for the light volumes.
+  bool Compute(vtkOpenGLRenderWindow* window,
+    const avs::GridGeometry& grid,
+    const std::array<int, 3>& lightDimensions,
+    vtkTextureObject* averaged,
+    vtkTextureObject* lights0,
+    vtkTextureObject* lights1,
+    const std::vector<avs::Light>& lights,
+    const avs::ScatteringParameters& resolved,
+    std::string& error);
+  /// Whether a fluence is uploaded.
+  bool IsReady() const { return this->Texture != nullptr; }
+  /// Activates the texture and sets the program's u_diffuse and u_diffuseDimensions.
+  void Bind(vtkShaderProgram* program);
+  void Unbind();
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  /// An RGBA float texture of dimensions d, undefined (for the GPU solve).
+  bool Allocate(vtkOpenGLRenderWindow* window,
+    vtkSmartPointer<vtkTextureObject>& texture,
+    const std::array<int, 3>& d,
+    const float* data,
+    std::string& error);
+  vtkSmartPointer<vtkTextureObject> Texture;
+  vtkSmartPointer<vtkTextureObject> Source; ///< the GPU solve's q
+  unsigned int Program = 0;                 ///< the GPU solve's program, for ProgramDefines
+  std::string ProgramDefines;
+  std::array<int, 3> Dimensions{ 0, 0, 0 };
+};
+
+#endif

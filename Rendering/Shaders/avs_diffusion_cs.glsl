@@ -1,0 +1,116 @@
+#version 430
+// The extended model's diffusion solve on the GPU (Core/DiffuseFluence.cxx is the CPU version,
+// which the tests hold this one against; ARCHITECTURE.md, "Beyond the paper", has the model).
+// The diffusion grid spans the data's lattice box; positions are in the data's local frame
+// (lights too: the free irradiance depends only on distances and the cone). Two stages:
+//  u_stage 0, the source: per cell, q = albedo (1 - g) sigma~t sum_j E_j^free T~_j into u_source
+//    (rgb), and (phi, sigma~t) = (0, sigma~t) into u_phi, from the averaged extinction and the
+//    packed light volumes on the light grid;
+//  u_stage 1, one SOR half-sweep: the cells with (i + j + k) % 2 == u_colour relax
+//    phi <- (1 - w) phi + w (q + sum_f K_f phi_f) / (sigma_a + sum_f K_f + leaks), with the
+//    harmonic-mean couplings of the CPU code and Marshak's leak towards vacuum and the border.
+// The ray caster defines AVS_NUMBER_OF_LIGHTS, AVS_POSITIONAL_LIGHTS and AVS_SPOT_LIGHTS, and
+// puts avs_lights.glsl (LightAt) before this text.
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+layout(rgba32f, binding = 0) uniform image3D u_phi;    // rgb: phi, a: sigma~t
+layout(rgba32f, binding = 1) uniform image3D u_source; // rgb: q
+uniform int u_stage;
+uniform int u_colour;
+uniform ivec3 u_dimensions;      // diffusion grid
+uniform vec3 u_spacing;          // its spacing (local frame)
+uniform vec3 u_lightDimensions;  // light grid
+uniform sampler3D u_averaged;    // averaged extinction on the light grid
+uniform sampler3D u_lightVolumes0;
+uniform sampler3D u_lightVolumes1;
+uniform float u_albedo;
+uniform float u_anisotropy;
+uniform float u_relaxation;
+uniform float u_transportLimit;  // 1 / sigma' at most
+uniform float u_vacuum;          // VacuumOpticalDepth / mean spacing
+
+float Tube(int j, vec4 t0, vec4 t1)
+{
+  return j < 4 ? t0[clamp(j, 0, 3)] : t1[clamp(j - 4, 0, 3)];
+}
+
+void Source(ivec3 cell)
+{
+  vec3 f = vec3(cell) / max(vec3(u_dimensions - 1), vec3(1.0));
+  vec3 lc = (f * (u_lightDimensions - 1.0) + 0.5) / u_lightDimensions;
+  float sigma = textureLod(u_averaged, lc, 0.0).r;
+  vec3 x = vec3(cell) * u_spacing;
+  vec3 e = vec3(0.0);
+  if (sigma > 0.0)
+  {
+    vec4 tubes0 = textureLod(u_lightVolumes0, lc, 0.0);
+#if AVS_NUMBER_OF_LIGHTS > 4
+    vec4 tubes1 = textureLod(u_lightVolumes1, lc, 0.0);
+#else
+    vec4 tubes1 = vec4(1.0);
+#endif
+    vec3 propagation, irradiance;
+#define AVS_ADD_SOURCE(j) LightAt(j, x, propagation, irradiance); e += irradiance * Tube(j, tubes0, tubes1);
+    AVS_FOR_EACH_LIGHT(AVS_ADD_SOURCE)
+  }
+  imageStore(u_source, cell, vec4(u_albedo * (1.0 - u_anisotropy) * sigma * e, 0.0));
+  imageStore(u_phi, cell, vec4(0.0, 0.0, 0.0, sigma));
+}
+
+// D of a cell of averaged extinction sigma; 0 for vacuum (sigma' h below VacuumOpticalDepth).
+float Diffusivity(float sigma)
+{
+  float reduced = (1.0 - u_albedo * u_anisotropy) * max(sigma, 0.0);
+  return reduced >= u_vacuum ? 1.0 / (3.0 * max(reduced, 1.0 / u_transportLimit)) : 0.0;
+}
+
+void Relax(ivec3 cell)
+{
+  vec4 here = imageLoad(u_phi, cell);
+  float d = Diffusivity(here.a);
+  if (!(d > 0.0))
+  {
+    return;
+  }
+  float diagonal = (1.0 - u_albedo) * max(here.a, 0.0);
+  vec3 sum = imageLoad(u_source, cell).rgb;
+  for (int f = 0; f < 6; ++f)
+  {
+    int axis = f / 2;
+    ivec3 m = cell;
+    m[axis] += (f % 2) == 1 ? 1 : -1;
+    float h = u_spacing[axis];
+    bool inside = m[axis] >= 0 && m[axis] < u_dimensions[axis];
+    vec4 there = inside ? imageLoad(u_phi, m) : vec4(0.0);
+    float dn = inside ? Diffusivity(there.a) : 0.0;
+    if (dn > 0.0)
+    {
+      float k = 2.0 * d * dn / (d + dn) / (h * h);
+      diagonal += k;
+      sum += k * there.rgb;
+    }
+    else
+    {
+      diagonal += d / (2.0 * d + 0.5 * h) / h;
+    }
+  }
+  vec3 phi = mix(here.rgb, sum / diagonal, u_relaxation);
+  imageStore(u_phi, cell, vec4(phi, here.a));
+}
+
+void main()
+{
+  ivec3 cell = ivec3(gl_GlobalInvocationID);
+  if (any(greaterThanEqual(cell, u_dimensions)))
+  {
+    return;
+  }
+  if (u_stage == 0)
+  {
+    Source(cell);
+  }
+  else if (((cell.x + cell.y + cell.z) & 1) == u_colour)
+  {
+    Relax(cell);
+  }
+}

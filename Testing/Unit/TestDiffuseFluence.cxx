@@ -1,0 +1,124 @@
+// The extended model's diffusion solve (DiffuseFluence.h): deep inside a large homogeneous medium
+// the fluence is q / sigma_a; without absorption the light of a point source leaves through the
+// Marshak boundary and the solve converges; vacuum holds no fluence; the fluence peaks at the
+// source and falls off towards the boundary; the default sweeps converge on a dense ball; the
+// source is albedo (1 - g) sigma~t E T, zero at albedo 0.
+#include "DiffuseFluence.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace avs;
+
+namespace
+{
+GridGeometry Box(int n, double spacing = 1.0)
+{
+  GridGeometry g;
+  g.Dimensions = { n, n, n };
+  g.Spacing = { spacing, spacing, spacing };
+  return g;
+}
+
+std::array<Grid, 3> Uniform(const GridGeometry& g, float q)
+{
+  return { Grid(g, q), Grid(g, q), Grid(g, q) };
+}
+
+// A ball of extinction sigma and radius `radius` (in cells) at the centre.
+Grid Ball(const GridGeometry& g, double sigma, double radius)
+{
+  Grid grid(g);
+  const double c = 0.5 * (g.Dimensions[0] - 1);
+  for (int k = 0; k < g.Dimensions[2]; ++k)
+    for (int j = 0; j < g.Dimensions[1]; ++j)
+      for (int i = 0; i < g.Dimensions[0]; ++i)
+      {
+        grid.At(i, j, k) =
+          Length(Vec3{ i - c, j - c, k - c }) < radius ? static_cast<float>(sigma) : 0.0f;
+      }
+  return grid;
+}
+} // namespace
+
+TEST(DiffuseFluence, InfiniteMediumLimit)
+{
+  const GridGeometry g = Box(32);
+  DiffusionSettings s;
+  s.Albedo = 0.9;
+  s.Anisotropy = 0.0;
+  s.Iterations = 200;
+  // sigma_a = 0.2 per cell; the diffusion length sqrt(D / sigma_a) is under one cell, so the
+  // centre, 16 cells from the boundary, sees an infinite medium.
+  const std::array<Grid, 3> phi = SolveDiffusion(Grid(g, 2.0f), Uniform(g, 1.0f), s);
+  EXPECT_NEAR(phi[0].At(16, 16, 16), 1.0 / 0.2, 0.01 * 5.0);
+  EXPECT_NEAR(phi[2].At(16, 16, 16), 1.0 / 0.2, 0.01 * 5.0);
+  // Near the boundary light leaks out: less than the infinite-medium value.
+  EXPECT_LT(phi[0].At(0, 16, 16), 0.9 * 5.0);
+}
+
+TEST(DiffuseFluence, PointSourceWithoutAbsorption)
+{
+  const GridGeometry g = Box(24);
+  DiffusionSettings s;
+  s.Albedo = 1.0; // sigma_a = 0
+  s.Anisotropy = 0.5;
+  s.Iterations = 600;
+  s.TransportLengthLimit = 1e6;
+  const Grid sigma = Ball(g, 1.5, 9.0);
+  std::array<Grid, 3> q = Uniform(g, 0.0f);
+  q[0].At(12, 12, 12) = 1.0f; // a point source at the centre
+  double residual = 1.0;
+  const std::array<Grid, 3> phi = SolveDiffusion(sigma, q, s, &residual);
+  EXPECT_LT(residual, 1e-4);
+  // Vacuum holds nothing; the fluence falls off from the source towards the surface.
+  EXPECT_EQ(phi[0].At(0, 0, 0), 0.0f);
+  for (int i = 12; i < 20; ++i)
+  {
+    EXPECT_GT(phi[0].At(i, 12, 12), phi[0].At(i + 1, 12, 12)) << i;
+  }
+  // The other channels had no source.
+  EXPECT_EQ(phi[1].At(12, 12, 12), 0.0f);
+}
+
+TEST(DiffuseFluence, DefaultSweepsConvergeOnADenseBall)
+{
+  // 64 cells across, optical radius about 40: the study's clouds on their grid.
+  const GridGeometry g = Box(64, 2.0 / 63.0);
+  DiffusionSettings s;
+  s.Albedo = 0.95;
+  s.Anisotropy = 0.6;
+  s.TransportLengthLimit = 16.0 * (2.0 * std::sqrt(3.0) / 64.0);
+  const Grid sigma = Ball(g, 22.0, 26.0);
+  std::array<Grid, 3> q = Uniform(g, 0.0f);
+  for (std::size_t i = 0; i < q[0].Values.size(); ++i)
+  {
+    q[0].Values[i] = sigma.Values[i] > 0.0f && i % 64 < 20 ? 1.0f : 0.0f; // lit from one side
+  }
+  double residual = 1.0;
+  SolveDiffusion(sigma, q, s, &residual);
+  EXPECT_LT(residual, 1e-2);
+}
+
+TEST(DiffuseFluence, Source)
+{
+  const GridGeometry g = Box(8, 0.5);
+  Light light;
+  light.Type = LightType::Directional;
+  light.Irradiance = { 1, 2, 3 };
+  light.Position = { 0, 0, 10 };
+  light.FocalPoint = { 0, 0, 0 };
+  const Grid sigma(g, 4.0f);
+  const std::vector<Grid> tubes{ Grid(g, 0.5f) };
+  DiffusionSettings s;
+  s.Albedo = 0.8;
+  s.Anisotropy = 0.25;
+  const std::array<Grid, 3> q = DiffusionSource(sigma, { light }, tubes, g, s);
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(q[c].At(3, 4, 5), 0.8 * 0.75 * 4.0 * (c + 1) * 0.5, 1e-5);
+  }
+  s.Albedo = 0.0;
+  EXPECT_EQ(DiffusionSource(sigma, { light }, tubes, g, s)[1].At(3, 4, 5), 0.0f);
+}
