@@ -178,6 +178,6 @@ bool vtkAVSImageSampler::Draw(vtkOpenGLRenderWindow* window,
   state->vtkglViewport(x, y, width, height);
   this->Composite->Render();
   this->Target->Deactivate();
-  vtkOpenGLCheckErrorMacro("failed after compositing the sampled pass");
+  vtkOpenGLStaticCheckErrorMacro("failed after compositing the sampled pass");
   return true;
 }
