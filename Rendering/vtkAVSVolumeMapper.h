@@ -67,6 +67,7 @@ class ScatteringTable;
 }
 
 class vtkImageData;
+class vtkMatrix4x4;
 class vtkVolumeProperty;
 
 class VTKRENDERINGAMBIENTSCATTERING_EXPORT vtkAVSVolumeMapper : public vtkVolumeMapper
@@ -293,6 +294,15 @@ private:
   /// Converts, checks, uploads and precomputes what changed; an interactive frame keeps the light
   /// volumes of camera-following lights.
   bool Prepare(vtkRenderer* renderer, vtkVolume* volume, bool interactive);
+  /// Prepare's precomputation (vtkAVSVolumeMapperPrecompute.cxx), after the uploads of the data
+  /// and the classification: the ambient-occlusion volume; for ambient scattering the table
+  /// slice, the averaged extinction, the light volumes (`gpuScattering`: on the GPU) and the
+  /// extended model's fluence. Each is rebuilt when what it was built from changed.
+  bool PrepareOcclusion();
+  bool PrepareScattering(const avs::ScatteringTable* table,
+    bool gpuScattering,
+    vtkMatrix4x4* worldToData,
+    bool interactive);
   // One warning when the property's shading flags ask for what this mapper does not do.
   void WarnAboutShading(vtkVolumeProperty* property);
   std::string ShadingWarning;

@@ -2,10 +2,13 @@
  * @class   vtkAVSRayCaster
  * @brief   the GL resources and the ray-casting pass shared by the module's mappers (private)
  *
- * Holds the textures (scalars, transfer function, averaged extinction, light volumes, ambient
- * occlusion, the scattering-table slice, the depth copy) and the full-screen ray-casting program
- * of one render window, and draws the pass composited over what the renderer drew. The mappers
- * decide what to upload and when; this class only talks to OpenGL.
+ * The frame of one render window: it holds the textures (vtkAVSVolumeTextures: scalars,
+ * classification, averaged extinction, light volumes, ambient occlusion, the scattering-table
+ * slice), the extended model's fluence (vtkAVSDiffuseVolume), the depth copy (vtkAVSDepthCopy),
+ * the compute passes of the GPU precomputation (vtkAVSAveragedExtinctionPass,
+ * vtkAVSLightVolumePass, vtkAVSOcclusionPass) and the full-screen ray-casting program
+ * (vtkAVSShaderAssembly), and draws the pass composited over what the renderer drew. The mappers
+ * decide what to upload and when; this class and those it holds only talk to OpenGL.
  */
 #ifndef vtkAVSRayCaster_h
 #define vtkAVSRayCaster_h
@@ -17,11 +20,14 @@
 #include "ScatteringParameters.h"
 #include "ScatteringTable.h"
 #include "TransferFunction.h"
-#include "vtkAVSClassification.h"
+#include "vtkAVSAveragedExtinctionPass.h"
+#include "vtkAVSDepthCopy.h"
 #include "vtkAVSDiffuseVolume.h"
-#include "vtkAVSShaderOptions.h"
-
 #include "vtkAVSImageSampler.h"
+#include "vtkAVSLightVolumePass.h"
+#include "vtkAVSOcclusionPass.h"
+#include "vtkAVSShaderOptions.h"
+#include "vtkAVSVolumeTextures.h"
 #include "vtkOpenGLRenderWindow.h" // for vtkWeakPointer<vtkOpenGLRenderWindow>
 #include "vtkSmartPointer.h"
 #include "vtkWeakPointer.h"
@@ -32,7 +38,6 @@
 
 class vtkAbstractMapper;
 class vtkMatrix4x4;
-class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkProp;
@@ -51,10 +56,6 @@ public:
   /// axes are read from the table texture per sample) and the GPU light-volume pass runs (it
   /// keeps log F in an array; longer axes make the mapper march the light volumes on the CPU).
   static constexpr int MaximumTauNodes = 64;
-  /// Packed light-volume textures: up to 8 lights, 4 channels each.
-  static constexpr int NumberOfLightTextures = 2;
-  /// How many of them `lights` lights need.
-  static int LightTexturesFor(int lights) { return (lights + 3) / 4; }
 
   vtkAVSRayCaster();
   ~vtkAVSRayCaster();
@@ -158,79 +159,24 @@ public:
   const std::array<int, 2>& GetLastPassSize() const { return this->LastPassSize; }
 
 private:
-  /// A 3D float texture of `components` channels (data may be null: allocated, undefined), in
-  /// the GL internal format `internalFormat` (0: 32-bit floats).
-  bool UploadScalarGrid(vtkSmartPointer<vtkTextureObject>& texture,
-    const std::array<int, 3>& dimensions,
-    int components,
-    const float* data,
-    std::string& error,
-    unsigned int internalFormat = 0);
+  /// The ray-casting program for `mode` and these defines (built again when they change).
   bool EnsureProgram(avs::RenderMode mode, const std::string& defines);
-  /// The filter of a volume texture: the nearest voxel or trilinear (the interpolation type).
-  static void SetVolumeFilter(vtkTextureObject* texture, bool nearest);
-  /// The light volumes' GL internal format: half floats on a GPU, floats on a software
-  /// rasterizer.
-  unsigned int LightVolumeFormat() const;
-  /// Whether the context's renderer runs on the CPU (llvmpipe and the like), asked once per
-  /// context.
-  bool IsSoftwareRenderer() const;
-  /// The first `count` packed light-volume textures on the light grid `dimensions`, allocated
-  /// (filled with ones) where missing or of another size.
-  bool EnsureLightTextures(const std::array<int, 3>& dimensions, int count, std::string& error);
-  /// Copies the depth of the read framebuffer's rectangle at (x, y) into Depth, by a blit into a
-  /// texture of the same depth format (multisampled framebuffers are resolved).
-  void CaptureDepth(int x, int y, int width, int height);
-  unsigned int BuildComputeProgram(const char* source, const char* what);
-  /// Every 3D texture held for the volume (the GPU memory budget counts them).
-  std::vector<vtkTextureObject*> VolumeTextures() const;
-  /// The averaged-extinction program for these defines (rebuilt when they change).
-  unsigned int BuildAverageProgram(const std::string& defines);
 
   /// Weak: the window may be deleted before the mapper (a volume removed from its renderer is
   /// not told), and its context took its resources with it.
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
-  vtkSmartPointer<vtkTextureObject> Scalars, Occlusion, Table, Depth;
-  vtkAVSClassification Classification;
+  vtkAVSVolumeTextures Textures;
   vtkAVSDiffuseVolume Diffuse; ///< the extended model's fluence
-  /// The layout the scalars were uploaded with (vtkAVSClassification::Layout).
-  vtkAVSClassification::Layout ScalarLayout;
-  std::vector<float> LogGain; ///< log(F(tau) exp(2 tau)) on the table's tau nodes
-  /// Data grid, for ambient scattering: the volume's channels and then the averaged sigma_t at
-  /// the voxel (AveragedChannel) or, when they do not fit into four channels, the averaged
-  /// sigma_t alone (AveragedChannel -1).
-  vtkSmartPointer<vtkTextureObject> ScalarsAveraged;
-  int AveragedChannel = 1;
-  /// Which channel of ScalarsAveraged holds the averaged extinction for a layout (-1: it is
-  /// alone in it), and its channel count.
-  static int AveragedChannelFor(const vtkAVSClassification::Layout& layout);
-  static int AveragedComponentsFor(const vtkAVSClassification::Layout& layout);
-  /// Classification and packing defines of the averaged-extinction program it was built with.
-  std::string AverageDefines;
-  /// Packed on the light grid: (T0-T3), (T4-T7).
-  vtkSmartPointer<vtkTextureObject> LightVolumes[NumberOfLightTextures];
-  /// The averaged extinction on the light grid, which the light-volume pass samples.
-  vtkSmartPointer<vtkTextureObject> AveragedExtinction;
-  /// The averaged-extinction pass's intermediate grids (sigma_t on the data grid, then reduced
-  /// along x and along y), kept between rebuilds: allocating them again costs more than the
-  /// pass on a software rasterizer.
-  vtkSmartPointer<vtkTextureObject> Scratch[3];
-  vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFramebuffer;
+  vtkAVSDepthCopy Depth;       ///< where the rays end at opaque geometry
+  vtkAVSAveragedExtinctionPass AveragedExtinctionPass;
+  vtkAVSLightVolumePass LightVolumePass;
+  vtkAVSOcclusionPass OcclusionPass;
+  int ComputeSupport = -1; ///< -1 unknown, 0 no, 1 yes
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
-  vtkAVSImageSampler ImageSampler; ///< the pass at image sample distances other than 1
-  std::array<int, 2> LastPassSize{ 0, 0 };
   int QuadMode = -1;
   std::string QuadDefines;
-  int DepthFormat = 0;
-  unsigned int ComputeProgram = 0;   ///< GL name of the light-volume compute program
-  unsigned int OcclusionProgram = 0; ///< GL name of the ambient-occlusion compute program
-  unsigned int AverageProgram = 0;   ///< GL name of the averaged-extinction compute program
-  int ComputeSupport = -1;           ///< -1 unknown, 0 no, 1 yes
-  mutable int SoftwareRenderer = -1; ///< -1 unknown, 0 no, 1 yes (IsSoftwareRenderer)
-  std::array<int, 3> LightTextureDimensions{ 0, 0, 0 };
-  bool DepthWarningGiven = false;
-  float TableSize[2] = { 1.0f, 1.0f };
-  float TableTauMaximum = 1.0f;
+  vtkAVSImageSampler ImageSampler; ///< the pass at image sample distances other than 1
+  std::array<int, 2> LastPassSize{ 0, 0 };
 };
 
 #endif

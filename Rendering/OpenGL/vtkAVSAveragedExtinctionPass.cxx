@@ -1,0 +1,158 @@
+#include "vtkAVSAveragedExtinctionPass.h"
+
+#include "vtkAVSRenderPasses.h"
+#include "vtkAVSShaderAssembly.h"
+#include "vtkAVSShaderOptions.h"
+#include "vtkAVSVolumeTextures.h"
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+namespace
+{
+// How pass 4 packs its result: the averaged extinction's channel beside the volume's (or
+// alone), and the image format of ScalarsAveraged.
+std::string PackingDefines(const vtkAVSClassification::Layout& layout)
+{
+  const int channel = vtkAVSVolumeTextures::AveragedChannelFor(layout);
+  const int components = vtkAVSVolumeTextures::AveragedComponentsFor(layout);
+  return layout.Defines() +
+    (channel >= 0 ? "#define AVS_AVERAGED_CHANNEL " + std::to_string(channel) + "\n"
+                  : std::string("#define AVS_AVERAGED_TEXTURE\n")) +
+    "#define AVS_FINAL_FORMAT " +
+    (components == 1 ? "r32f" : (components == 2 ? "rg32f" : "rgba32f")) + "\n";
+}
+} // namespace
+
+unsigned int vtkAVSAveragedExtinctionPass::Build(const vtkAVSClassification::Layout& layout)
+{
+  const std::string defines = PackingDefines(layout);
+  if (this->Program && this->Defines == defines)
+  {
+    return this->Program;
+  }
+  if (this->Program)
+  {
+    glDeleteProgram(this->Program);
+    this->Program = 0;
+  }
+  this->Program = vtkAVSShaderAssembly::BuildComputeProgram(
+    vtkAVSShaderAssembly::AveragedExtinctionShader(defines).c_str(), "averaged-extinction");
+  this->Defines = this->Program ? defines : std::string();
+  return this->Program;
+}
+
+void vtkAVSAveragedExtinctionPass::ReleaseGraphicsResources(bool context)
+{
+  vtkAVSShaderAssembly::ReleaseComputeProgram(this->Program, context);
+  this->Defines.clear();
+}
+
+bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
+  const std::array<int, 3>& dimensions,
+  const std::array<int, 3>& lightDimensions,
+  const std::array<int, 3>& halfWidths,
+  const avs::ClipRegion& clip,
+  std::string& error)
+{
+  // The program for this classification, and how pass 4 packs its result.
+  const vtkAVSClassification::Layout& layout = textures.Classification.GetLayout();
+  const int channel = vtkAVSVolumeTextures::AveragedChannelFor(layout);
+  const int components = vtkAVSVolumeTextures::AveragedComponentsFor(layout);
+  const GLenum finalFormat = components == 1 ? GL_R32F : (components == 2 ? GL_RG32F : GL_RGBA32F);
+  if (!this->Build(layout))
+  {
+    error = "the averaged-extinction compute shader did not compile (see the log above)";
+    return false;
+  }
+  // Pass 0 classifies into Scratch[0] (data grid); the x pass shrinks x to the light grid (into
+  // Scratch[1]), the y pass y (into Scratch[2]), the z pass z (into AveragedExtinction); pass 4
+  // writes the scalars and the averaged extinction at the voxels into ScalarsAveraged.
+  const std::array<int, 3>& d = dimensions;
+  const std::array<int, 3>& l = lightDimensions;
+  const std::array<int, 3> shapes[4] = { d, { l[0], d[1], d[2] }, { l[0], l[1], d[2] }, l };
+  vtkSmartPointer<vtkTextureObject>* images[4] = {
+    &textures.Scratch[0], &textures.Scratch[1], &textures.Scratch[2], &textures.AveragedExtinction
+  };
+  for (int i = 0; i < 4; ++i)
+  {
+    if (!textures.UploadGrid(*images[i], shapes[i], 1, nullptr, error))
+    {
+      return false;
+    }
+  }
+  if (!textures.UploadGrid(textures.ScalarsAveraged, d, components, nullptr, error))
+  {
+    return false;
+  }
+  textures.AveragedChannel = channel;
+  const GLuint program = this->Program;
+  vtkAVSRenderPasses::DiscardErrors(); // the check at the end is of this pass alone
+  textures.Window->GetShaderCache()->ReleaseCurrentShader();
+  glUseProgram(program);
+  auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
+  const double count =
+    (2.0 * halfWidths[0] + 1) * (2.0 * halfWidths[1] + 1) * (2.0 * halfWidths[2] + 1);
+  glUniform1f(location("u_inverseCount"), static_cast<float>(1.0 / count));
+  vtkAVSVolumeTextures::SetVolumeFilter(textures.Scalars, layout.Nearest);
+  textures.Scalars->Activate();
+  glUniform1i(location("u_scalars"), textures.Scalars->GetTextureUnit());
+  textures.Classification.Bind(program);
+  vtkAVSShaderOptions::SetClipUniforms(program, clip);
+  glBindImageTexture(
+    2, textures.ScalarsAveraged->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, finalFormat);
+  for (int pass = 0; pass < 4; ++pass)
+  {
+    // Pass p reads images[p - 1] (pass 0: the scalars) and writes images[p].
+    const std::array<int, 3>& in = pass == 0 ? d : shapes[pass - 1];
+    if (pass > 0)
+    {
+      glBindImageTexture(0, (*images[pass - 1])->GetHandle(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
+    }
+    glBindImageTexture(1, (*images[pass])->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+    glUniform1i(location("u_pass"), pass);
+    glUniform3i(location("u_dimensions"), in[0], in[1], in[2]);
+    if (pass == 0)
+    {
+      glDispatchCompute(
+        static_cast<GLuint>((d[0] + 7) / 8), static_cast<GLuint>((d[1] + 7) / 8), 1);
+    }
+    else
+    {
+      const int axis = pass - 1;
+      const int u = axis == 0 ? in[1] : in[0];
+      const int v = axis == 2 ? in[1] : in[2];
+      glUniform1i(location("u_halfWidth"), halfWidths[axis]);
+      glUniform1i(location("u_targetLength"), l[axis]);
+      glDispatchCompute(static_cast<GLuint>((u + 7) / 8), static_cast<GLuint>((v + 7) / 8), 1);
+    }
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  }
+  // Pass 4 samples AveragedExtinction as a texture: no image may write it meanwhile.
+  glBindImageTexture(1, textures.Scratch[0]->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+  textures.AveragedExtinction->Activate();
+  glUniform1i(location("u_averaged"), textures.AveragedExtinction->GetTextureUnit());
+  glUniform3f(location("u_target"),
+    static_cast<float>(l[0]),
+    static_cast<float>(l[1]),
+    static_cast<float>(l[2]));
+  glUniform1i(location("u_pass"), 4);
+  glUniform3i(location("u_dimensions"), d[0], d[1], d[2]);
+  glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8), static_cast<GLuint>((d[1] + 7) / 8), 1);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  textures.AveragedExtinction->Deactivate();
+  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
+  glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+  glBindImageTexture(2, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, finalFormat);
+  glUseProgram(0);
+  textures.Scalars->Deactivate();
+  textures.Classification.Unbind();
+  if (const GLenum status = glGetError())
+  {
+    error = "the averaged-extinction compute pass failed (GL error " + std::to_string(status) + ")";
+    return false;
+  }
+  return true;
+}

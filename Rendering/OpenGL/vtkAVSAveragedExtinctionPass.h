@@ -1,0 +1,49 @@
+/**
+ * @class   vtkAVSAveragedExtinctionPass
+ * @brief   the averaged extinction computed on the GPU (private)
+ *
+ * The compute pass of avs_average_cs.glsl over the ray caster's textures
+ * (vtkAVSVolumeTextures): pass 0 classifies the uploaded scalars into sigma_t on the data's grid
+ * (zero outside the clip region), passes 1-3 box-sum it along x, y and z with the averaging half
+ * widths, each axis interpolated onto the light grid as it is summed, into AveragedExtinction;
+ * pass 4 writes the volume's channels and the averaged extinction interpolated back at the
+ * voxels into ScalarsAveraged. The CPU twin is Rendering/Core/AveragedExtinction.cxx.
+ */
+#ifndef vtkAVSAveragedExtinctionPass_h
+#define vtkAVSAveragedExtinctionPass_h
+
+#include "ClipRegion.h"
+#include "vtkAVSClassification.h"
+
+#include <array>
+#include <string>
+
+class vtkAVSVolumeTextures;
+
+class vtkAVSAveragedExtinctionPass
+{
+public:
+  vtkAVSAveragedExtinctionPass() = default;
+  vtkAVSAveragedExtinctionPass(const vtkAVSAveragedExtinctionPass&) = delete;
+  vtkAVSAveragedExtinctionPass& operator=(const vtkAVSAveragedExtinctionPass&) = delete;
+
+  /// The program for a classification layout (built again when its defines change); 0 when it
+  /// does not compile.
+  unsigned int Build(const vtkAVSClassification::Layout& layout);
+  /// Runs the passes (the caller checked for compute shaders, scalars and classification).
+  bool Run(vtkAVSVolumeTextures& textures,
+    const std::array<int, 3>& dimensions,
+    const std::array<int, 3>& lightDimensions,
+    const std::array<int, 3>& halfWidths,
+    const avs::ClipRegion& clip,
+    std::string& error);
+  /// Forgets the program, deleting it when its context is current (`context`).
+  void ReleaseGraphicsResources(bool context);
+
+private:
+  unsigned int Program = 0; ///< GL name of the averaged-extinction compute program
+  /// Classification and packing defines it was built with.
+  std::string Defines;
+};
+
+#endif

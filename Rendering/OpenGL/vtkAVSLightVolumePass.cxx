@@ -1,0 +1,89 @@
+#include "vtkAVSLightVolumePass.h"
+
+#include "vtkAVSRenderPasses.h"
+#include "vtkAVSShaderAssembly.h"
+#include "vtkAVSVolumeTextures.h"
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+bool vtkAVSLightVolumePass::Build(int maximumTauNodes, bool software)
+{
+  this->Program = vtkAVSShaderAssembly::BuildComputeProgram(
+    vtkAVSShaderAssembly::LightVolumeShader(maximumTauNodes, software).c_str(), "light-volume");
+  return this->Program != 0;
+}
+
+void vtkAVSLightVolumePass::ReleaseGraphicsResources(bool context)
+{
+  vtkAVSShaderAssembly::ReleaseComputeProgram(this->Program, context);
+}
+
+bool vtkAVSLightVolumePass::Run(vtkAVSVolumeTextures& textures,
+  int index,
+  const avs::GridGeometry& lightGrid,
+  const avs::Light& light,
+  double radius,
+  std::string& error)
+{
+  const auto& d = lightGrid.Dimensions;
+  // Channel c of texture t holds light 4 t + c.
+  const int texture = index / 4;
+  if (!textures.EnsureLightTextures(d, texture + 1, error))
+  {
+    return false;
+  }
+  const GLuint program = this->Program;
+  vtkAVSRenderPasses::DiscardErrors(); // the check at the end is of this pass alone
+  // The shader cache must rebind its own program afterwards.
+  textures.Window->GetShaderCache()->ReleaseCurrentShader();
+  glUseProgram(program);
+  auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
+  glBindImageTexture(0,
+    textures.LightVolumes[texture]->GetHandle(),
+    0,
+    GL_TRUE,
+    0,
+    GL_READ_WRITE,
+    textures.LightVolumeFormat());
+  glUniform1i(location("u_channel"), index % 4);
+  glUniform3i(location("u_targetDimensions"), d[0], d[1], d[2]);
+  glUniform3f(location("u_targetSpacing"),
+    static_cast<float>(lightGrid.Spacing.x),
+    static_cast<float>(lightGrid.Spacing.y),
+    static_cast<float>(lightGrid.Spacing.z));
+  textures.AveragedExtinction->Activate();
+  glUniform1i(location("u_averaged"), textures.AveragedExtinction->GetTextureUnit());
+  const avs::Vec3 extent = lightGrid.LocalExtent();
+  glUniform3f(location("u_extent"),
+    static_cast<float>(extent.x),
+    static_cast<float>(extent.y),
+    static_cast<float>(extent.z));
+  glUniform1fv(
+    location("u_logGain"), static_cast<GLsizei>(textures.LogGain.size()), textures.LogGain.data());
+  glUniform1i(location("u_tauNodes"), static_cast<GLint>(textures.LogGain.size()));
+  glUniform1f(location("u_tauMaximum"), textures.TableTauMaximum);
+  glUniform1f(location("u_radius"), static_cast<float>(radius));
+  const bool positional = light.Type == avs::LightType::Positional;
+  const avs::Vec3 l = positional
+    ? lightGrid.WorldToLocal(light.Position)
+    : lightGrid.WorldToLocalDirection(avs::Normalize(light.FocalPoint - light.Position));
+  glUniform1i(location("u_positional"), positional ? 1 : 0);
+  glUniform3f(
+    location("u_light"), static_cast<float>(l.x), static_cast<float>(l.y), static_cast<float>(l.z));
+  glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8),
+    static_cast<GLuint>((d[1] + 7) / 8),
+    static_cast<GLuint>(d[2]));
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, textures.LightVolumeFormat());
+  glUseProgram(0);
+  textures.AveragedExtinction->Deactivate();
+  if (const GLenum status = glGetError())
+  {
+    error = "the light-volume compute pass failed (GL error " + std::to_string(status) + ")";
+    return false;
+  }
+  return true;
+}

@@ -1,0 +1,46 @@
+/**
+ * @class   vtkAVSLightVolumePass
+ * @brief   the light volumes tube-marched on the GPU (private)
+ *
+ * The compute pass of avs_lightvolume_cs.glsl: for one light (in the data's frame), the
+ * transmittance of each node of the light grid through the averaged extinction, weighted by the
+ * table slice's log gain, into the light's channel of the packed light-volume textures
+ * (vtkAVSVolumeTextures; channel c of texture t holds light 4 t + c, allocated once per size).
+ * The CPU twin is Rendering/Core/LightVolume.cxx.
+ */
+#ifndef vtkAVSLightVolumePass_h
+#define vtkAVSLightVolumePass_h
+
+#include "Grid.h"
+#include "Lights.h"
+
+#include <string>
+
+class vtkAVSVolumeTextures;
+
+class vtkAVSLightVolumePass
+{
+public:
+  vtkAVSLightVolumePass() = default;
+  vtkAVSLightVolumePass(const vtkAVSLightVolumePass&) = delete;
+  vtkAVSLightVolumePass& operator=(const vtkAVSLightVolumePass&) = delete;
+
+  /// Builds the program for tables of up to `maximumTauNodes` tau nodes, writing the light
+  /// textures' format (vtkAVSVolumeTextures::LightVolumeFormat); false when it does not compile.
+  bool Build(int maximumTauNodes, bool software);
+  /// Runs the pass for light `index` (the caller checked for compute shaders, the averaged
+  /// extinction on the light grid and a table slice of at most `maximumTauNodes` nodes).
+  bool Run(vtkAVSVolumeTextures& textures,
+    int index,
+    const avs::GridGeometry& lightGrid,
+    const avs::Light& light,
+    double radius,
+    std::string& error);
+  /// Forgets the program, deleting it when its context is current (`context`).
+  void ReleaseGraphicsResources(bool context);
+
+private:
+  unsigned int Program = 0; ///< GL name of the light-volume compute program
+};
+
+#endif

@@ -1,0 +1,59 @@
+/**
+ * @class   vtkAVSShaderAssembly
+ * @brief   the ray caster's GLSL programs put together from the shader snippets (private)
+ *
+ * The ray-casting fragment shader is avs_raycast_fs.glsl with the classification
+ * (avs_classify.glsl), the lights (avs_lights.glsl), the clipping (avs_clip.glsl) and one effect
+ * file (avs_ea_effect.glsl, avs_blend_effect.glsl, avs_ao_effect.glsl or avs_as_effect.glsl,
+ * split at its //AVS::Effect::Init and //AVS::Effect::Sample markers) put in at its markers,
+ * after the frame's compile-time choices (RayCastDefines). The compute passes' sources get their
+ * defines after the #version line; the averaged-extinction pass gets the same classification and
+ * clipping snippets as the ray caster, so the two cannot drift apart.
+ */
+#ifndef vtkAVSShaderAssembly_h
+#define vtkAVSShaderAssembly_h
+
+#include "Lights.h"
+#include "ReferenceRenderer.h"
+#include "ScatteringParameters.h"
+#include "vtkAVSClassification.h"
+
+#include <string>
+#include <vector>
+
+class vtkAVSShaderAssembly
+{
+public:
+  /// Compile-time choices of the ray-casting program for a frame (see avs_lights.glsl and the
+  /// effect files): the classification's, the number of lights and which are positional or
+  /// spots, AO's direct light, and for ambient scattering the ring buffer's size (or the explicit
+  /// look-ahead), the diffuse fluence, the light textures to fetch, emission and the per-ray table
+  /// columns of directional lights (`tauNodes`: the table slice's tau axis). `averagedChannel`:
+  /// where the averaged extinction sits in the ambient-scattering volume texture (-1: a texture
+  /// of its own). One program per combination.
+  static std::string RayCastDefines(avs::RenderMode mode,
+    const avs::ScatteringParameters& parameters,
+    const std::vector<avs::Light>& lights,
+    int tauNodes,
+    const vtkAVSClassification::Layout& layout,
+    int averagedChannel);
+  /// The ray-casting fragment shader of `mode` with `defines` (RayCastDefines, the clipping's and
+  /// the blend mode's); a blend mode other than composite (AVS_BLEND) takes the blend effect.
+  static std::string RayCastFragmentShader(avs::RenderMode mode, const std::string& defines);
+
+  /// The averaged-extinction compute shader (avs_average_cs.glsl) with `defines` and the
+  /// classification and clipping snippets.
+  static std::string AveragedExtinctionShader(const std::string& defines);
+  /// The light-volume compute shader (avs_lightvolume_cs.glsl) for tables of up to
+  /// `maximumTauNodes` tau nodes, writing light volumes of 32-bit floats (`software`) or half
+  /// floats.
+  static std::string LightVolumeShader(int maximumTauNodes, bool software);
+  /// Compiles and links a compute program (the context current); 0, with a warning naming
+  /// `what`, when it does not compile or link.
+  static unsigned int BuildComputeProgram(const char* source, const char* what);
+  /// Deletes a compute program when the context that made it is current (`context`), and
+  /// forgets its name either way (a deleted window's context took it with it).
+  static void ReleaseComputeProgram(unsigned int& program, bool context);
+};
+
+#endif

@@ -1,0 +1,125 @@
+/**
+ * @class   vtkAVSVolumeTextures
+ * @brief   the ray caster's textures of one render window and their uploads (private)
+ *
+ * Holds every texture vtkAVSRayCaster draws with or its compute passes write: the scalars, the
+ * classification (vtkAVSClassification), the ambient-scattering volume texture (the volume's
+ * channels beside the averaged extinction at the voxels), the averaged extinction on the light
+ * grid, the packed light volumes, the ambient-occlusion volume, the scattering-table slice and
+ * the averaged-extinction pass's intermediate grids. Each 3D allocation goes through
+ * UploadGrid, which checks the context's 3D-texture limit and the GPU memory budget
+ * (vtkAVSTextureMemory) first. The compute passes (vtkAVSAveragedExtinctionPass,
+ * vtkAVSLightVolumePass, vtkAVSOcclusionPass) read and write the members directly; the ray
+ * caster binds them for its frame.
+ */
+#ifndef vtkAVSVolumeTextures_h
+#define vtkAVSVolumeTextures_h
+
+#include "Grid.h"
+#include "ReferenceRenderer.h"
+#include "ScatteringTable.h"
+#include "vtkAVSClassification.h"
+
+#include "vtkOpenGLRenderWindow.h" // for vtkWeakPointer<vtkOpenGLRenderWindow>
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h" // for vtkSmartPointer<vtkTextureObject>
+#include "vtkWeakPointer.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+class vtkWindow;
+
+class vtkAVSVolumeTextures
+{
+public:
+  /// Packed light-volume textures: up to 8 lights, 4 channels each.
+  static constexpr int NumberOfLightTextures = 2;
+  /// How many of them `lights` lights need.
+  static int LightTexturesFor(int lights) { return (lights + 3) / 4; }
+
+  vtkAVSVolumeTextures() = default;
+  vtkAVSVolumeTextures(const vtkAVSVolumeTextures&) = delete;
+  vtkAVSVolumeTextures& operator=(const vtkAVSVolumeTextures&) = delete;
+
+  /// The window whose context the textures are made in (the ray caster's).
+  void SetWindow(vtkOpenGLRenderWindow* window);
+  /// Releases every texture (in the current context, which the caller made `window`'s).
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+  /// Largest 3D texture size of the context (0 without a context).
+  int MaximumTextureSize3D() const;
+  /// Whether the context's renderer runs on the CPU (llvmpipe and the like), asked once per
+  /// context.
+  bool IsSoftwareRenderer() const;
+  /// The light volumes' GL internal format: half floats on a GPU, floats on a software
+  /// rasterizer.
+  unsigned int LightVolumeFormat() const;
+
+  /// A 3D float texture of `components` channels (data may be null: allocated, undefined, and
+  /// storage of the same size reused), in the GL internal format `internalFormat` (0: 32-bit
+  /// floats). Returns false and says why in `error` when the GPU refuses.
+  bool UploadGrid(vtkSmartPointer<vtkTextureObject>& texture,
+    const std::array<int, 3>& dimensions,
+    int components,
+    const float* data,
+    std::string& error,
+    unsigned int internalFormat = 0);
+  /// The first `count` packed light-volume textures on the light grid `dimensions`, allocated
+  /// (filled with ones) where missing or of another size.
+  bool EnsureLightTextures(const std::array<int, 3>& dimensions, int count, std::string& error);
+
+  /// The uploads of vtkAVSRayCaster (documented there).
+  bool UploadScalars(const avs::VolumeScene& scene, std::string& error);
+  bool UploadClassification(const avs::VolumeScene& scene, std::string& error);
+  bool UploadScalarsAveraged(const avs::VolumeScene& scene,
+    const avs::Grid& averagedAtVoxels,
+    std::string& error);
+  bool UploadLightVolumes(const std::vector<avs::Grid>& lights, std::string& error);
+  bool UploadOcclusion(const avs::Grid& occlusion, std::string& error);
+  bool UploadTableSlice(const avs::ScatteringSlice& slice, std::string& error);
+
+  /// Every 3D texture held for the volume (the GPU memory budget counts them), the
+  /// classification's last.
+  std::vector<vtkTextureObject*> VolumeTextures() const;
+  /// The filter of a volume texture: the nearest voxel or trilinear (the interpolation type).
+  static void SetVolumeFilter(vtkTextureObject* texture, bool nearest);
+  /// Clamped to the edge, linear: how every texture of the ray caster is sampled.
+  static void ConfigureSampling(vtkTextureObject* texture);
+  /// Which channel of ScalarsAveraged holds the averaged extinction for a layout (-1: it is
+  /// alone in it), and its channel count.
+  static int AveragedChannelFor(const vtkAVSClassification::Layout& layout);
+  static int AveragedComponentsFor(const vtkAVSClassification::Layout& layout);
+
+  /// Weak: the window may be deleted before the mapper, and its context took its resources.
+  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
+  vtkSmartPointer<vtkTextureObject> Scalars, Occlusion, Table;
+  vtkAVSClassification Classification;
+  /// The layout the scalars were uploaded with (vtkAVSClassification::Layout).
+  vtkAVSClassification::Layout ScalarLayout;
+  /// Data grid, for ambient scattering: the volume's channels and then the averaged sigma_t at
+  /// the voxel (AveragedChannel) or, when they do not fit into four channels, the averaged
+  /// sigma_t alone (AveragedChannel -1).
+  vtkSmartPointer<vtkTextureObject> ScalarsAveraged;
+  int AveragedChannel = 1;
+  /// Packed on the light grid: (T0-T3), (T4-T7).
+  vtkSmartPointer<vtkTextureObject> LightVolumes[NumberOfLightTextures];
+  std::array<int, 3> LightTextureDimensions{ 0, 0, 0 };
+  /// The averaged extinction on the light grid, which the light-volume pass samples.
+  vtkSmartPointer<vtkTextureObject> AveragedExtinction;
+  /// The averaged-extinction pass's intermediate grids (sigma_t on the data grid, then reduced
+  /// along x and along y), kept between rebuilds: allocating them again costs more than the
+  /// pass on a software rasterizer.
+  vtkSmartPointer<vtkTextureObject> Scratch[3];
+  /// The table slice: log(F(tau) exp(2 tau)) on its tau nodes (the light-volume pass's uniform
+  /// array), its size (theta, tau) and its longest tau.
+  std::vector<float> LogGain;
+  float TableSize[2] = { 1.0f, 1.0f };
+  float TableTauMaximum = 1.0f;
+
+private:
+  mutable int SoftwareRenderer = -1; ///< -1 unknown, 0 no, 1 yes (IsSoftwareRenderer)
+};
+
+#endif

@@ -1,0 +1,115 @@
+/**
+ * @struct  vtkAVSVolumeMapper::Internals
+ * @brief   what vtkAVSVolumeMapper keeps between frames (private)
+ *
+ * The ray caster of the mapper's render window, what the uploaded data and classification came
+ * from (objects and modification times), the versions of the derived volumes and the keys each
+ * precomputed volume was built for (vtkAVSVolumeMapperPrecompute.cxx compares them), and the
+ * frame's resolved parameters, transform and lights. Shared by vtkAVSVolumeMapper.cxx and
+ * vtkAVSVolumeMapperPrecompute.cxx.
+ */
+#ifndef vtkAVSVolumeMapperInternals_h
+#define vtkAVSVolumeMapperInternals_h
+
+#include "vtkAVSVolumeMapper.h"
+
+#include "Grid.h"
+#include "Lights.h"
+#include "ReferenceRenderer.h"
+#include "ScatteringParameters.h"
+#include "ScatteringTable.h"
+#include "vtkAVSDataTranslator.h"
+#include "vtkAVSRayCaster.h"
+
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkVolumeProperty.h"
+
+#include <array>
+#include <vector>
+
+struct vtkAVSVolumeMapper::Internals
+{
+  vtkAVSRayCaster RayCaster;
+
+  // What the uploaded data came from: the image, the selected array and the selection.
+  vtkImageData* DataObject = nullptr;
+  vtkMTimeType DataTime = 0;
+  vtkDataArray* ArrayObject = nullptr;
+  vtkMTimeType ArrayTime = 0;
+  vtkAVSDataTranslator::Selection Selection;
+  /// The volume as the core classifies it: the grids from the data, the functions from the
+  /// property (Scalars empty: nothing converted).
+  avs::VolumeScene Scene;
+  std::vector<std::array<double, 2>> Ranges; ///< finite range of each component
+  vtkImageData* MaskObject = nullptr;        ///< what Scene.Medium.MaskValues came from
+  vtkMTimeType MaskTime = 0;
+  int ScalarType = 0;
+  bool ScalarsUploaded = false;
+
+  vtkVolumeProperty* PropertyObject = nullptr;
+  vtkMTimeType PropertyTime = 0;
+  vtkMTimeType ClassificationTime = 0; ///< this mapper's MTime when the property was converted
+  bool TransferUploaded = false;
+
+  // Versions of the derived volumes: a change of a version invalidates what uses it.
+  int DataVersion = 0;
+  int TransferVersion = 0;
+  int ExtinctionKey[2] = { -1, -1 }; // data, opacity versions of Extinction
+  // What sigma_t depends on besides the data (avs::ExtinctionKey), and its version (a colour
+  // change leaves it).
+  int OpacityVersion = 0;
+  std::vector<double> ExtinctionInputs;
+  avs::Grid Extinction;
+
+  // Ambient scattering.
+  int AveragedKey[2] = { -1, -1 };
+  double AveragedRadius = -1.0;
+  avs::Grid Averaged; ///< on the light grid (CPU precomputation)
+  int AveragedVersion = 0;
+  int AveragedOnGPU = -1;
+  std::array<int, 3> AveragedDimensions{ 0, 0, 0 }; ///< the light grid it was computed on
+  const avs::ScatteringTable* SliceTable = nullptr;
+  double SliceG = 2.0, SliceAlbedo = -1.0;
+  avs::ScatteringSlice Slice;
+  int SliceVersion = 0;
+  int LightGridMaximum = -1;
+  struct LightState
+  {
+    avs::Light DataFrame; ///< the light in the data's frame
+    int AveragedVersion = -1;
+    int SliceVersion = -1;
+    double Radius = -1.0;
+    bool Built = false;
+    avs::Grid Volume; ///< CPU path only
+  };
+  std::vector<LightState> Lights;
+  bool LightVolumesUploaded = false;
+  int LightsOnGPU = -1;
+  std::array<int, 3> LightGridDimensions{ 2, 2, 2 };
+
+  // The extended model's diffuse fluence (uploaded for the light volumes of this build).
+  bool DiffuseUploaded = false;
+  int DiffuseOnGPU = -1;
+  int DiffuseIterations = -1;
+  int DiffuseGridMaximum = -1;
+
+  // Ambient occlusion.
+  std::array<int, 3> OcclusionDimensions{ 0, 0, 0 };
+  int OcclusionKey[2] = { -1, -1 };
+  double OcclusionRadius = -1.0;
+  int OcclusionDirections = -1;
+  bool OcclusionUploaded = false;
+
+  vtkNew<vtkMatrix4x4> WorldToIndex;
+  avs::ScatteringParameters Parameters;
+  std::vector<avs::Light> WorldLights;
+  std::vector<bool> FollowsCamera; ///< per light: a headlight or camera light
+
+  /// The ray-casting pass's measured cost (AutoAdjustSampleDistances); 0: not measured yet.
+  double SecondsPerRay = 0.0;
+};
+
+#endif

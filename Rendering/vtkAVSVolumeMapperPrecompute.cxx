@@ -1,0 +1,262 @@
+#include "vtkAVSVolumeMapper.h"
+
+#include "vtkAVSVolumeMapperInternals.h"
+
+#include "AmbientOcclusion.h"
+#include "AveragedExtinction.h"
+#include "DiffuseFluence.h"
+#include "LightVolume.h"
+#include "ReferenceRenderer.h"
+
+#include <string>
+
+// The precomputation of vtkAVSVolumeMapper::Prepare: each precomputed volume is rebuilt (on the
+// GPU when the context can, else on the CPU and uploaded) when a key it was built for changed,
+// and the mapper counts the rebuild.
+
+namespace
+{
+bool SamePose(const avs::Light& a, const avs::Light& b)
+{
+  auto same = [](const avs::Vec3& x, const avs::Vec3& y)
+  { return x.x == y.x && x.y == y.y && x.z == y.z; };
+  return a.Type == b.Type && same(a.Position, b.Position) && same(a.FocalPoint, b.FocalPoint);
+}
+
+avs::Vec3 Transform(vtkMatrix4x4* m, const avs::Vec3& p)
+{
+  double in[4] = { p.x, p.y, p.z, 1.0 }, out[4];
+  m->MultiplyPoint(in, out);
+  return { out[0] / out[3], out[1] / out[3], out[2] / out[3] };
+}
+} // namespace
+
+bool vtkAVSVolumeMapper::PrepareOcclusion()
+{
+  auto& in = *this->Internal;
+  const avs::GridGeometry& g = in.Scene.Scalars.Geometry;
+  const avs::ScatteringParameters& rp = in.Parameters;
+  std::string error;
+  // The occlusion volume's grid: the data's, capped like the light volumes'.
+  const avs::GridGeometry occlusionGrid = g.Capped(rp.OcclusionVolumeMaximumDimension);
+  if (in.OcclusionKey[0] != in.ExtinctionKey[0] || in.OcclusionKey[1] != in.ExtinctionKey[1] ||
+    in.OcclusionRadius != rp.OcclusionRadius || in.OcclusionDirections != rp.NumberOfDirections ||
+    in.OcclusionDimensions != occlusionGrid.Dimensions || !in.OcclusionUploaded)
+  {
+    this->UpdateProgress(0.0);
+    const bool gpu = this->PrecomputeOnGPU && in.RayCaster.SupportsComputeShaders() &&
+      rp.NumberOfDirections <= 256;
+    if (gpu)
+    {
+      if (!in.RayCaster.ComputeOcclusion(in.Extinction,
+            occlusionGrid.Dimensions,
+            rp.OcclusionRadius,
+            rp.NumberOfDirections,
+            error))
+      {
+        vtkErrorMacro("Cannot render: " << error);
+        return false;
+      }
+    }
+    else
+    {
+      const avs::Grid ao = avs::ComputeAmbientOcclusion(in.Extinction,
+        occlusionGrid,
+        rp.OcclusionRadius,
+        rp.NumberOfDirections,
+        0.0,
+        nullptr,
+        [this](double v) { this->UpdateProgress(v); });
+      if (!in.RayCaster.UploadOcclusion(ao, error))
+      {
+        vtkErrorMacro("Cannot render: " << error);
+        return false;
+      }
+    }
+    this->OcclusionOnGPU = gpu;
+    this->UpdateProgress(1.0);
+    in.OcclusionKey[0] = in.ExtinctionKey[0];
+    in.OcclusionKey[1] = in.ExtinctionKey[1];
+    in.OcclusionRadius = rp.OcclusionRadius;
+    in.OcclusionDirections = rp.NumberOfDirections;
+    in.OcclusionDimensions = occlusionGrid.Dimensions;
+    in.OcclusionUploaded = true;
+    ++this->NumberOfOcclusionRebuilds;
+  }
+  return true;
+}
+
+bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
+  bool gpuScattering,
+  vtkMatrix4x4* worldToData,
+  bool interactive)
+{
+  auto& in = *this->Internal;
+  const avs::GridGeometry& g = in.Scene.Scalars.Geometry;
+  const avs::ScatteringParameters& rp = in.Parameters;
+  std::string error;
+  // Ambient scattering: table slice, averaged extinction, light volumes.
+  if (table != in.SliceTable || rp.Anisotropy != in.SliceG || rp.Albedo != in.SliceAlbedo)
+  {
+    in.Slice = table->Slice(rp.Anisotropy, rp.Albedo);
+    if (!in.RayCaster.UploadTableSlice(in.Slice, error))
+    {
+      vtkErrorMacro("Cannot render: " << error);
+      return false;
+    }
+    in.SliceTable = table;
+    in.SliceG = rp.Anisotropy;
+    in.SliceAlbedo = rp.Albedo;
+    ++in.SliceVersion;
+  }
+  // The averaged extinction and the light volumes share the light grid.
+  const avs::GridGeometry lightGrid = g.Capped(rp.LightVolumeMaximumDimension);
+  if (in.AveragedKey[0] != in.DataVersion || in.AveragedKey[1] != in.OpacityVersion ||
+    in.AveragedRadius != rp.AmbientRadius || in.AveragedOnGPU != (gpuScattering ? 1 : 0) ||
+    in.AveragedDimensions != lightGrid.Dimensions)
+  {
+    if (gpuScattering)
+    {
+      if (!in.RayCaster.ComputeAveragedExtinction(g.Dimensions,
+            lightGrid.Dimensions,
+            avs::AveragingHalfWidths(rp.AmbientRadius, g.Spacing),
+            in.Scene.Clip,
+            error))
+      {
+        vtkErrorMacro("Cannot render: " << error);
+        return false;
+      }
+    }
+    else
+    {
+      in.Averaged = avs::AverageExtinctionOn(in.Extinction, rp.AmbientRadius, lightGrid);
+      if (!in.RayCaster.UploadScalarsAveraged(
+            in.Scene, avs::ResampleTrilinear(in.Averaged, g), error))
+      {
+        vtkErrorMacro("Cannot render: " << error);
+        return false;
+      }
+    }
+    in.AveragedKey[0] = in.DataVersion;
+    in.AveragedKey[1] = in.OpacityVersion;
+    in.AveragedOnGPU = gpuScattering ? 1 : 0;
+    in.AveragedRadius = rp.AmbientRadius;
+    in.AveragedDimensions = lightGrid.Dimensions;
+    ++in.AveragedVersion;
+    ++this->NumberOfExtinctionRebuilds;
+  }
+  const bool gpu = gpuScattering;
+  if (in.LightGridMaximum != rp.LightVolumeMaximumDimension || in.LightsOnGPU != (gpu ? 1 : 0))
+  {
+    in.Lights.clear();
+    in.LightGridMaximum = rp.LightVolumeMaximumDimension;
+    in.LightsOnGPU = gpu ? 1 : 0;
+    in.LightVolumesUploaded = false;
+  }
+  in.LightGridDimensions = lightGrid.Dimensions;
+  this->LightVolumesOnGPU = gpu;
+  const std::size_t n = in.WorldLights.size();
+  bool changed = in.Lights.size() != n || !in.LightVolumesUploaded;
+  bool rebuilt = changed; // a light volume was rebuilt (on the CPU or the GPU)
+  in.Lights.resize(n);
+  for (std::size_t j = 0; j < n; ++j)
+  {
+    avs::Light dataLight = in.WorldLights[j];
+    dataLight.Position = Transform(worldToData, dataLight.Position);
+    dataLight.FocalPoint = Transform(worldToData, dataLight.FocalPoint);
+    auto& state = in.Lights[j];
+    const bool current = state.Built && state.AveragedVersion == in.AveragedVersion &&
+      state.SliceVersion == in.SliceVersion && state.Radius == rp.AmbientRadius;
+    // While interacting, a light that follows the camera keeps the volume of its last pose (the
+    // still frame rebuilds it): only the pose is stale, and it moves with every camera move.
+    const bool keep =
+      interactive && current && in.FollowsCamera[j] && state.DataFrame.Type == dataLight.Type;
+    if (!current || (!SamePose(state.DataFrame, dataLight) && !keep))
+    {
+      this->UpdateProgress(static_cast<double>(j) / n);
+      if (gpu)
+      {
+        if (!in.RayCaster.ComputeLightVolume(
+              static_cast<int>(j), lightGrid, dataLight, rp.AmbientRadius, error))
+        {
+          vtkErrorMacro("Cannot render: " << error);
+          return false;
+        }
+      }
+      else
+      {
+        state.Volume = avs::ComputeLightVolume(in.Averaged,
+          lightGrid,
+          dataLight,
+          in.Slice,
+          rp.AmbientRadius,
+          nullptr,
+          [this, j, n](double v) { this->UpdateProgress((j + v) / static_cast<double>(n)); });
+        changed = true;
+      }
+      state.DataFrame = dataLight;
+      state.AveragedVersion = in.AveragedVersion;
+      state.SliceVersion = in.SliceVersion;
+      state.Radius = rp.AmbientRadius;
+      state.Built = true;
+      rebuilt = true;
+      ++this->NumberOfLightVolumeRebuilds;
+    }
+  }
+  if (!gpu && changed)
+  {
+    std::vector<avs::Grid> volumes;
+    for (const auto& state : in.Lights)
+    {
+      volumes.push_back(state.Volume);
+    }
+    if (!in.RayCaster.UploadLightVolumes(volumes, error))
+    {
+      vtkErrorMacro("Cannot render: " << error);
+      return false;
+    }
+  }
+  in.LightVolumesUploaded = true;
+  // The extended model: the diffuse fluence from the light volumes (DiffuseFluence.h).
+  if (rp.Model != avs::ScatteringModel::Extended)
+  {
+    in.DiffuseUploaded = false;
+    return true;
+  }
+  if (rebuilt || !in.DiffuseUploaded || in.DiffuseOnGPU != (gpu ? 1 : 0) ||
+    in.DiffuseIterations != rp.DiffusionIterations ||
+    in.DiffuseGridMaximum != rp.DiffusionVolumeMaximumDimension)
+  {
+    std::vector<avs::Light> lights;
+    std::vector<avs::Grid> volumes;
+    for (const auto& state : in.Lights)
+    {
+      lights.push_back(state.DataFrame);
+      volumes.push_back(state.Volume);
+    }
+    vtkAVSDiffuseVolume& diffuse = in.RayCaster.GetDiffuseVolume();
+    const bool done = gpu
+      ? diffuse.Compute(in.RayCaster.GetWindow(),
+          avs::DiffusionGeometry(lightGrid, rp.DiffusionVolumeMaximumDimension),
+          lightGrid.Dimensions,
+          in.RayCaster.GetAveragedExtinctionTexture(),
+          in.RayCaster.GetLightVolumeTexture(0),
+          in.RayCaster.GetLightVolumeTexture(1),
+          lights,
+          rp,
+          error)
+      : diffuse.Upload(
+          in.RayCaster.GetWindow(), avs::ComputeDiffuse(in.Averaged, lights, volumes, rp), error);
+    if (!done)
+    {
+      vtkErrorMacro("Cannot render: " << error);
+      return false;
+    }
+    in.DiffuseOnGPU = gpu ? 1 : 0;
+    in.DiffuseUploaded = true;
+    in.DiffuseIterations = rp.DiffusionIterations;
+    in.DiffuseGridMaximum = rp.DiffusionVolumeMaximumDimension;
+    ++this->NumberOfDiffusionRebuilds;
+  }
+  return true;
+}
