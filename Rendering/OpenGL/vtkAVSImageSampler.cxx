@@ -4,6 +4,7 @@
 
 #include "ImageSampleDistance.h"
 
+#include "vtkObject.h" // vtkOpenGLError.h uses vtkObject without including it
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
