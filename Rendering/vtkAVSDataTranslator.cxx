@@ -297,6 +297,19 @@ bool vtkAVSDataTranslator::ToVolume(vtkImageData* image,
     {
       range[0] = range[1] = 0.0; // no finite value at all
     }
+    // The renderers compute in single precision: finite values beyond its range would become
+    // infinities there (found by the translator fuzzer: a double of 1e300).
+    constexpr double largest = std::numeric_limits<float>::max();
+    if (range[0] < -largest || range[1] > largest)
+    {
+      std::ostringstream os;
+      os << "component " << c << " has values beyond the single-precision range (its finite range "
+         << range[0] << " to " << range[1] << "; at most +-" << largest
+         << " is supported): rescale the data";
+      error = os.str();
+      volume = Volume();
+      return false;
+    }
     volume.Ranges.push_back({ range[0], range[1] });
     volume.Components.push_back(std::move(grid));
   }

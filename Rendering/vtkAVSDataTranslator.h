@@ -72,7 +72,8 @@ public:
   /// a volume less than 2 samples thick, non-finite or non-positive spacing, a non-finite origin,
   /// a direction matrix that is not orthonormal, too many voxels, a spacing outside
   /// [1e-30, 1e30] or a box beyond +-1e30 (single precision on the GPU), an image more than 2^23
-  /// times as long as its smallest spacing (rays of over 2^24 samples). `warning` is set (else left
+  /// times as long as its smallest spacing (rays of over 2^24 samples), finite values beyond
+  /// the single-precision range. `warning` is set (else left
   /// empty) when the data has NaN or infinite values: their counts, once per conversion.
   static bool ToVolume(vtkImageData* image,
     const Selection& selection,
