@@ -72,6 +72,9 @@ foreach (_avs_file IN LISTS _avs_files)
         "${_avs_text}")
     endif ()
   endforeach ()
+  # Packages made by configure_package_config_file (VTK-m's) climb from their own folder.
+  string(REPLACE "get_filename_component(PACKAGE_PREFIX_DIR \"\${CMAKE_CURRENT_LIST_DIR}/"
+    "get_filename_component(PACKAGE_PREFIX_DIR \"${_avs_origin_dir}/" _avs_text "${_avs_text}")
   string(REPLACE "set(_vtk_module_import_prefix \"\${CMAKE_CURRENT_LIST_DIR}\")"
     "set(_vtk_module_import_prefix \"${_avs_origin_dir}\")" _avs_text "${_avs_text}")
   file(WRITE "${_avs_to}.tmp" "${_avs_text}")
