@@ -44,6 +44,7 @@ vtkAVSVolumeMapper::vtkAVSVolumeMapper()
 vtkAVSVolumeMapper::~vtkAVSVolumeMapper()
 {
   this->SetMaskInput(nullptr);
+  this->SetController(nullptr);
   this->Internal->RayCaster.ReleaseGraphicsResources(this->Internal->RayCaster.GetWindow());
 }
 
@@ -213,6 +214,13 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     }
   }
 
+  // Distributed rendering: the whole image of which the input is a piece.
+  if (!this->ResolvePiece(input, error))
+  {
+    vtkErrorMacro("Cannot render: " << error);
+    return false;
+  }
+
   // Parameters: base values, then the subclass's.
   avs::ScatteringParameters p;
   p.SampleDistance = this->SampleDistance;
@@ -226,7 +234,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   }
   p.TerminationTransmittance = this->TerminationTransmittance;
   this->FillParameters(p);
-  in.Parameters = p.Resolve(in.Scene.Scalars.Geometry);
+  in.Parameters = p.Resolve(in.Whole); // the automatic radius: the whole image's
   const avs::ScatteringParameters& rp = in.Parameters;
 
   // Transforms: data -> world is the volume's matrix; index -> data is the grid's placement.
@@ -319,7 +327,8 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   const bool gpuScattering = effect == 2 && this->PrecomputeOnGPU &&
     in.RayCaster.SupportsComputeShaders() &&
     table->Axes.NumberOfTau <= vtkAVSRayCaster::MaximumTauNodes;
-  if (!gpuScattering &&
+  // (A piece of a larger whole computes its share of the averaged extinction on the CPU.)
+  if ((!gpuScattering || this->LitAsPiece) &&
     (in.ExtinctionKey[0] != in.DataVersion || in.ExtinctionKey[1] != in.OpacityVersion))
   {
     in.Extinction = avs::ExtinctionGrid(in.Scene);
@@ -487,6 +496,8 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.Clip = in.Scene.Clip;
   frame.Blend = blend;
   frame.LightVolumeDimensions = in.LightGridDimensions;
+  frame.WholeDimensions = in.Whole.Dimensions;
+  frame.PieceOffset = in.PieceOffset;
   frame.OcclusionDimensions = in.OcclusionDimensions;
   frame.Lights = in.WorldLights;
   frame.Jitter = this->UseJittering != 0;
@@ -545,6 +556,12 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PrecomputeOnGPU: " << (this->PrecomputeOnGPU ? "On" : "Off") << "\n";
   os << indent << "LightVolumesOnGPU: " << (this->LightVolumesOnGPU ? "yes" : "no") << "\n";
   os << indent << "OcclusionOnGPU: " << (this->OcclusionOnGPU ? "yes" : "no") << "\n";
+  os << indent << "WholeExtent: (" << this->WholeExtent[0] << ", " << this->WholeExtent[1] << ", "
+     << this->WholeExtent[2] << ", " << this->WholeExtent[3] << ", " << this->WholeExtent[4] << ", "
+     << this->WholeExtent[5] << ")"
+     << (this->WholeExtent[0] > this->WholeExtent[1] ? " (the input is the whole)" : "") << "\n";
+  os << indent << "Controller: " << this->Controller << "\n";
+  os << indent << "LitAsPiece: " << (this->LitAsPiece ? "yes" : "no") << "\n";
   // What of vtkVolumeMapper's settings (printed above) this mapper honours.
   const int planes = this->ClippingPlanes ? this->ClippingPlanes->GetNumberOfItems() : 0;
   os << indent << "ClippingPlanes honoured: " << planes << " plane(s), at most "

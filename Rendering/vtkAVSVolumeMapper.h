@@ -62,12 +62,14 @@
 
 namespace avs
 {
+struct GridGeometry;
 struct ScatteringParameters;
 class ScatteringTable;
 }
 
 class vtkImageData;
 class vtkMatrix4x4;
+class vtkMultiProcessController;
 class vtkVolumeProperty;
 
 class VTKRENDERINGAMBIENTSCATTERING_EXPORT vtkAVSVolumeMapper : public vtkVolumeMapper
@@ -181,6 +183,41 @@ public:
 
   ///@{
   /**
+   * Distributed rendering (ParaView's pvserver and pvbatch under MPI, or any application whose
+   * processes render one piece of an image each and composite the pictures): WholeExtent is the
+   * extent of the whole image of which the input is a piece (VTK's extents are global, so the
+   * input's extent lies inside it), Controller the processes that render the pieces.
+   *
+   * When the whole extent is larger than the input's, ambient scattering lights the piece as a
+   * part of the whole: the automatic ambient radius and the light grid are the whole image's,
+   * each process adds its share of the averaged extinction on that grid to the others' (one
+   * vtkMultiProcessController::AllReduce of at most LightVolumeMaximumDimension^3 floats, and an
+   * AllGather of the pieces' extents, per change of data, transfer function, clipping or radius;
+   * never per camera or light move), and every process marches the light volumes through the
+   * whole, so light and shadows cross the pieces' boundaries. These calls are collective: every
+   * process of the controller must render its (non-empty) piece in the same frames. Samples
+   * that pieces share (the common face of point data, ghost layers) count once, for the piece of
+   * lowest rank. The precomputation of a piece runs on the CPU. Without a controller (or with one
+   * process) the rest of the whole is empty space.
+   *
+   * Differences: the emission-absorption mapper needs neither (compositing is exact); the
+   * ambient-occlusion mapper occludes within its piece only; the extended scattering model's
+   * diffusion is solved per process on the whole light grid (exact) but on the CPU. Defaults: an
+   * empty whole extent (0, -1, 0, -1, 0, -1: the input is the whole) and no controller.
+   */
+  vtkSetVector6Macro(WholeExtent, int);
+  vtkGetVector6Macro(WholeExtent, int);
+  virtual void SetController(vtkMultiProcessController* controller);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
+  /**
+   * Whether the last frame lit its input as a piece of a larger whole (see WholeExtent).
+   */
+  vtkGetMacro(LitAsPiece, vtkTypeBool);
+
+  ///@{
+  /**
    * A mask, as vtkGPUVolumeRayCastMapper's (VTK 9.1): image data with as many samples as the
    * volume (points for point data, cells for cell data; read by sample, its own origin and
    * spacing unused), its point (else cell) scalars, first component. MaskType
@@ -276,6 +313,9 @@ protected:
   vtkTypeBool PrecomputeOnGPU = 1;
   vtkTypeBool LightVolumesOnGPU = 0;
   vtkTypeBool OcclusionOnGPU = 0;
+  int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
+  vtkMultiProcessController* Controller = nullptr;
+  vtkTypeBool LitAsPiece = 0;
 
   int NumberOfDataUploads = 0;
   int NumberOfExtinctionRebuilds = 0;
@@ -303,6 +343,11 @@ private:
     bool gpuScattering,
     vtkMatrix4x4* worldToData,
     bool interactive);
+  /// Distributed rendering (vtkAVSVolumeMapperPieces.cxx): where the input lies in WholeExtent
+  /// (Internals' Whole, PieceOffset, LitAsPiece), checked; and the averaged extinction of the
+  /// whole on `lightGrid` from the pieces' shares (collective).
+  bool ResolvePiece(vtkImageData* input, std::string& error);
+  bool AverageAcrossPieces(const avs::GridGeometry& lightGrid, std::string& error);
   // One warning when the property's shading flags ask for what this mapper does not do.
   void WarnAboutShading(vtkVolumeProperty* property);
   std::string ShadingWarning;

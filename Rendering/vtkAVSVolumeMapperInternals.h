@@ -70,7 +70,8 @@ struct vtkAVSVolumeMapper::Internals
   avs::Grid Averaged; ///< on the light grid (CPU precomputation)
   int AveragedVersion = 0;
   int AveragedOnGPU = -1;
-  std::array<int, 3> AveragedDimensions{ 0, 0, 0 }; ///< the light grid it was computed on
+  std::array<int, 3> AveragedDimensions{ 0, 0, 0 };     ///< the light grid it was computed on
+  std::array<int, 6> AveragedPiece{ 0, 0, 0, 0, 0, 0 }; ///< whole dimensions, piece offset
   const avs::ScatteringTable* SliceTable = nullptr;
   double SliceG = 2.0, SliceAlbedo = -1.0;
   avs::ScatteringSlice Slice;
@@ -102,6 +103,11 @@ struct vtkAVSVolumeMapper::Internals
   double OcclusionRadius = -1.0;
   int OcclusionDirections = -1;
   bool OcclusionUploaded = false;
+
+  // Distributed rendering: the whole grid of which the input is a piece (the input's own grid
+  // when not lit as a piece) and the piece's first sample in it.
+  avs::GridGeometry Whole;
+  std::array<int, 3> PieceOffset{ 0, 0, 0 };
 
   vtkNew<vtkMatrix4x4> WorldToIndex;
   avs::ScatteringParameters Parameters;

@@ -6,6 +6,7 @@
 #include "AveragedExtinction.h"
 #include "DiffuseFluence.h"
 #include "LightVolume.h"
+#include "PieceAveraging.h"
 #include "ReferenceRenderer.h"
 
 #include <string>
@@ -109,13 +110,32 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
     in.SliceAlbedo = rp.Albedo;
     ++in.SliceVersion;
   }
-  // The averaged extinction and the light volumes share the light grid.
-  const avs::GridGeometry lightGrid = g.Capped(rp.LightVolumeMaximumDimension);
+  // The averaged extinction and the light volumes share the light grid: over the whole image
+  // when the input is a piece of it (vtkAVSVolumeMapperPieces.cxx).
+  const avs::GridGeometry lightGrid = in.Whole.Capped(rp.LightVolumeMaximumDimension);
+  const std::array<int, 6> piece{ in.Whole.Dimensions[0],
+    in.Whole.Dimensions[1],
+    in.Whole.Dimensions[2],
+    in.PieceOffset[0],
+    in.PieceOffset[1],
+    in.PieceOffset[2] };
   if (in.AveragedKey[0] != in.DataVersion || in.AveragedKey[1] != in.OpacityVersion ||
     in.AveragedRadius != rp.AmbientRadius || in.AveragedOnGPU != (gpuScattering ? 1 : 0) ||
-    in.AveragedDimensions != lightGrid.Dimensions)
+    in.AveragedDimensions != lightGrid.Dimensions || in.AveragedPiece != piece)
   {
-    if (gpuScattering)
+    if (this->LitAsPiece)
+    {
+      // The pieces' shares summed (collective), then at this piece's voxels for the rays and,
+      // for the GPU light-volume pass, on the light grid.
+      if (!this->AverageAcrossPieces(lightGrid, error) ||
+        !in.RayCaster.UploadScalarsAveraged(in.Scene, avs::SampleAtPoints(in.Averaged, g), error) ||
+        (gpuScattering && !in.RayCaster.UploadAveragedExtinction(in.Averaged, error)))
+      {
+        vtkErrorMacro("Cannot render: " << error);
+        return false;
+      }
+    }
+    else if (gpuScattering)
     {
       if (!in.RayCaster.ComputeAveragedExtinction(g.Dimensions,
             lightGrid.Dimensions,
@@ -142,6 +162,7 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
     in.AveragedOnGPU = gpuScattering ? 1 : 0;
     in.AveragedRadius = rp.AmbientRadius;
     in.AveragedDimensions = lightGrid.Dimensions;
+    in.AveragedPiece = piece;
     ++in.AveragedVersion;
     ++this->NumberOfExtinctionRebuilds;
   }

@@ -93,6 +93,15 @@ bool vtkAVSRayCaster::UploadScalarsAveraged(const avs::VolumeScene& scene,
   return this->Textures.UploadScalarsAveraged(scene, averagedAtVoxels, error);
 }
 
+bool vtkAVSRayCaster::UploadAveragedExtinction(const avs::Grid& averaged, std::string& error)
+{
+  return this->Textures.UploadGrid(this->Textures.AveragedExtinction,
+    averaged.Geometry.Dimensions,
+    1,
+    averaged.Values.data(),
+    error);
+}
+
 bool vtkAVSRayCaster::UploadLightVolumes(const std::vector<avs::Grid>& lights, std::string& error)
 {
   return this->Textures.UploadLightVolumes(lights, error);
@@ -321,6 +330,14 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
       static_cast<float>(frame.LightVolumeDimensions[1]),
       static_cast<float>(frame.LightVolumeDimensions[2]) };
     program->SetUniform3f("u_lightVolumeDimensions", lvd);
+    const float whole[3] = { static_cast<float>(frame.WholeDimensions[0]),
+      static_cast<float>(frame.WholeDimensions[1]),
+      static_cast<float>(frame.WholeDimensions[2]) };
+    program->SetUniform3f("u_wholeDimensions", whole);
+    const float offset[3] = { static_cast<float>(frame.PieceOffset[0]),
+      static_cast<float>(frame.PieceOffset[1]),
+      static_cast<float>(frame.PieceOffset[2]) };
+    program->SetUniform3f("u_pieceOffset", offset);
     tx.Table->Activate();
     program->SetUniformi("u_table", tx.Table->GetTextureUnit());
     program->SetUniform2f("u_tableSize", tx.TableSize);

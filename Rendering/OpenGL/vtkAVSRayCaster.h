@@ -83,6 +83,10 @@ public:
   bool UploadScalarsAveraged(const avs::VolumeScene& scene,
     const avs::Grid& averagedAtVoxels,
     std::string& error);
+  /// The averaged extinction on the light grid computed elsewhere (distributed rendering: the
+  /// pieces' shares summed over the processes), where ComputeAveragedExtinction would put it
+  /// for the light-volume pass (ComputeLightVolume) and the diffusion solve.
+  bool UploadAveragedExtinction(const avs::Grid& averaged, std::string& error);
   /// ... and up to 8 light volumes on one (the light) grid, four to an RGBA texture.
   bool UploadLightVolumes(const std::vector<avs::Grid>& lights, std::string& error);
 
@@ -139,6 +143,10 @@ public:
     avs::ClipRegion Clip;             ///< clipping planes and cropping, index frame
     vtkAVSShaderOptions::Blend Blend; ///< emission-absorption only
     std::array<int, 3> LightVolumeDimensions{ 1, 1, 1 };
+    /// The light grid covers the whole image of which the volume is a piece (distributed
+    /// rendering): its samples and the piece's first sample in it.
+    std::array<int, 3> WholeDimensions{ 1, 1, 1 };
+    std::array<int, 3> PieceOffset{ 0, 0, 0 };
     std::array<int, 3> OcclusionDimensions{ 1, 1, 1 };
     std::vector<avs::Light> Lights; ///< world space
     bool Jitter = true;

@@ -41,6 +41,10 @@ uniform sampler3D u_lightVolumes0;
 uniform sampler3D u_lightVolumes1;
 #endif
 uniform vec3 u_lightVolumeDimensions;
+// The light grid covers the whole image of which the volume is a piece (distributed rendering;
+// the volume itself otherwise): the whole's samples and the piece's first sample in it.
+uniform vec3 u_wholeDimensions;
+uniform vec3 u_pieceOffset;
 uniform sampler2D u_table;         // A(theta, tau) for the current g and albedo
 uniform vec2 u_tableSize;          // theta nodes, tau nodes
 uniform float u_tableTauMaximum;
@@ -174,15 +178,17 @@ bool EffectContinues(float T, int i)
 //AVS::Effect::Init
   g_lag = int(floor(u_ambientRadius / dt));
   g_lagFraction = u_ambientRadius / dt - float(g_lag);
-  // lc = (index / (dims - 1) * (light dims - 1) + 0.5) / light dims; table texel centres.
-  g_lightScale = (u_lightVolumeDimensions - 1.0) / ((u_dimensions - 1.0) * u_lightVolumeDimensions);
-  g_lightOffset = 0.5 / u_lightVolumeDimensions;
+  // lc = ((index + offset) / (whole dims - 1) * (light dims - 1) + 0.5) / light dims; table
+  // texel centres.
+  g_lightScale =
+    (u_lightVolumeDimensions - 1.0) / ((u_wholeDimensions - 1.0) * u_lightVolumeDimensions);
+  g_lightOffset = u_pieceOffset * g_lightScale + 0.5 / u_lightVolumeDimensions;
   g_tableScale = (u_tableSize - 1.0) / u_tableSize;
   g_tableOffset = 0.5 / u_tableSize;
   g_tauScale = 1.0 / log(1.0 + u_tableTauMaximum);
 #ifdef AVS_DIFFUSE
-  g_diffuseScale = (u_diffuseDimensions - 1.0) / ((u_dimensions - 1.0) * u_diffuseDimensions);
-  g_diffuseOffset = 0.5 / u_diffuseDimensions;
+  g_diffuseScale = (u_diffuseDimensions - 1.0) / ((u_wholeDimensions - 1.0) * u_diffuseDimensions);
+  g_diffuseOffset = u_pieceOffset * g_diffuseScale + 0.5 / u_diffuseDimensions;
 #endif
 #define AVS_THETA_COORDINATE(j) g_thetaCoordinate[j] = ThetaCoordinate(dot(u_lightAxis[j], -direction));
   AVS_FOR_EACH_LIGHT(AVS_THETA_COORDINATE)

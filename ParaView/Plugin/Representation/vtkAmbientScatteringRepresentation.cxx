@@ -3,6 +3,7 @@
 #include "vtkAmbientOcclusionVolumeMapper.h"
 #include "vtkAmbientScatteringVolumeMapper.h"
 #include "vtkEmissionAbsorptionVolumeMapper.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 
 vtkStandardNewMacro(vtkAmbientScatteringRepresentation);
@@ -147,6 +148,21 @@ std::array<vtkAVSVolumeMapper*, 3> vtkAmbientScatteringRepresentation::Mappers()
     this->AmbientScatteringMapper.GetPointer() };
 }
 
+void vtkAmbientScatteringRepresentation::UpdateMapperParameters()
+{
+  this->Superclass::UpdateMapperParameters();
+  // The whole extent comes from the pipeline (RequestData); every rank has the same.
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const bool distributed =
+    this->LightAcrossRanks && controller && controller->GetNumberOfProcesses() > 1;
+  const int none[6] = { 0, -1, 0, -1, 0, -1 };
+  for (vtkAVSVolumeMapper* m : this->Mappers())
+  {
+    m->SetWholeExtent(distributed ? this->WholeExtent : none);
+    m->SetController(distributed ? controller : nullptr);
+  }
+}
+
 void vtkAmbientScatteringRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -162,6 +178,7 @@ void vtkAmbientScatteringRepresentation::PrintSelf(ostream& os, vtkIndent indent
   os << indent << "LightVolumeMaximumDimension: " << this->GetLightVolumeMaximumDimension() << "\n";
   os << indent << "SampleDistance: " << this->GetSampleDistance() << "\n";
   os << indent << "UseJittering: " << this->GetUseJittering() << "\n";
+  os << indent << "LightAcrossRanks: " << (this->LightAcrossRanks ? "On" : "Off") << "\n";
   os << indent << "EmissionAbsorptionMapper: " << this->EmissionAbsorptionMapper.GetPointer()
      << "\n";
   os << indent << "AmbientOcclusionMapper: " << this->AmbientOcclusionMapper.GetPointer() << "\n";

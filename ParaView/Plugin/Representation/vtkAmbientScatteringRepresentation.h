@@ -127,6 +127,20 @@ public:
   int GetUseJittering();
   ///@}
 
+  ///@{
+  /**
+   * Under MPI (more than one process in vtkMultiProcessController::GetGlobalController()): on
+   * (the default), the mappers light each rank's piece as a part of the whole image (their
+   * WholeExtent and Controller; vtkAVSVolumeMapper), so light and shadows cross the pieces'
+   * boundaries; off, each rank lights its piece alone. Every rank must hold a piece of the image
+   * (ParaView splits image data by extent, so up to as many ranks as the image has samples
+   * along its longest axis).
+   */
+  vtkSetMacro(LightAcrossRanks, vtkTypeBool);
+  vtkGetMacro(LightAcrossRanks, vtkTypeBool);
+  vtkBooleanMacro(LightAcrossRanks, vtkTypeBool);
+  ///@}
+
   /**
    * The mapper of the current lighting model.
    */
@@ -137,6 +151,10 @@ protected:
   ~vtkAmbientScatteringRepresentation() override;
 
   std::array<vtkAVSVolumeMapper*, 3> Mappers();
+  /// The superclass's, then the whole extent and the controller of distributed lighting.
+  void UpdateMapperParameters() override;
+
+  vtkTypeBool LightAcrossRanks = 1;
 
   int LightingModel = AmbientScattering;
   vtkNew<vtkEmissionAbsorptionVolumeMapper> EmissionAbsorptionMapper;
