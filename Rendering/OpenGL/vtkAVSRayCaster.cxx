@@ -866,6 +866,7 @@ bool vtkAVSRayCaster::ComputeLightVolume(int index,
   const avs::GridGeometry& lightGrid,
   const avs::Light& light,
   double radius,
+  avs::TubeLaw law,
   std::string& error)
 {
   if (!this->SupportsComputeShaders() || !this->AveragedExtinction || this->LogGain.size() < 2)
@@ -917,6 +918,7 @@ bool vtkAVSRayCaster::ComputeLightVolume(int index,
   glUniform1i(location("u_tauNodes"), static_cast<GLint>(this->LogGain.size()));
   glUniform1f(location("u_tauMaximum"), this->TableTauMaximum);
   glUniform1f(location("u_radius"), static_cast<float>(radius));
+  glUniform1i(location("u_directBeam"), law == avs::TubeLaw::DirectBeam ? 1 : 0);
   const bool positional = light.Type == avs::LightType::Positional;
   const avs::Vec3 l = positional
     ? lightGrid.WorldToLocal(light.Position)
