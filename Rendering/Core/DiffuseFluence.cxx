@@ -25,11 +25,12 @@ std::array<Grid, 3> DiffusionSource(const Grid& averaged,
   const GridGeometry& target,
   const DiffusionSettings& settings)
 {
-  std::vector<double> weights;
+  std::vector<double> weights, toCentre;
   for (const Light& light : lights)
   {
-    weights.push_back(
-      DiffusionSourceWeight(TubeLawFor(true, light.Type), settings.Albedo, settings.Anisotropy));
+    const TubeLaw law = TubeLawFor(true, light.Type);
+    weights.push_back(DiffusionSourceWeight(law, settings.Albedo, settings.Anisotropy));
+    toCentre.push_back(law == TubeLaw::DirectBeam ? settings.AmbientRadius : 0.0);
   }
   std::array<Grid, 3> q{ Grid(target), Grid(target), Grid(target) };
   const auto& n = target.Dimensions;
@@ -50,7 +51,8 @@ std::array<Grid, 3> DiffusionSource(const Grid& averaged,
               {
                 e = e +
                   lights[l].FreeIrradiance(world) *
-                    (weights[l] * lightVolumes[l].SampleWorld(world));
+                    (weights[l] * std::exp(-toCentre[l] * sigma) *
+                      lightVolumes[l].SampleWorld(world));
               }
             }
             const std::size_t index = target.Index(i, j, static_cast<int>(k));

@@ -80,6 +80,7 @@ std::vector<Grid> ComputeDiffuse(const Grid& averaged,
   settings.Anisotropy = p.Anisotropy;
   settings.Iterations = p.DiffusionIterations;
   settings.TransportLengthLimit = TransportLengthLimitInRadii * p.AmbientRadius;
+  settings.AmbientRadius = p.AmbientRadius;
   const GridGeometry target =
     DiffusionGeometry(averaged.Geometry, p.DiffusionVolumeMaximumDimension);
   const Grid sigma = ResampleTrilinear(averaged, target);
