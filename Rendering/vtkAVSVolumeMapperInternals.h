@@ -83,6 +83,7 @@ struct vtkAVSVolumeMapper::Internals
     int AveragedVersion = -1;
     int SliceVersion = -1;
     double Radius = -1.0;
+    avs::TubeLaw Law = avs::TubeLaw::Forward;
     bool Built = false;
     avs::Grid Volume; ///< CPU path only
   };

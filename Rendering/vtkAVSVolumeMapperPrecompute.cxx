@@ -186,8 +186,10 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
     dataLight.Position = Transform(worldToData, dataLight.Position);
     dataLight.FocalPoint = Transform(worldToData, dataLight.FocalPoint);
     auto& state = in.Lights[j];
+    const avs::TubeLaw law =
+      avs::TubeLawFor(rp.Model == avs::ScatteringModel::Extended, dataLight.Type);
     const bool current = state.Built && state.AveragedVersion == in.AveragedVersion &&
-      state.SliceVersion == in.SliceVersion && state.Radius == rp.AmbientRadius;
+      state.SliceVersion == in.SliceVersion && state.Radius == rp.AmbientRadius && state.Law == law;
     // While interacting, a light that follows the camera keeps the volume of its last pose (the
     // still frame rebuilds it): only the pose is stale, and it moves with every camera move.
     const bool keep =
@@ -198,7 +200,7 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
       if (gpu)
       {
         if (!in.RayCaster.ComputeLightVolume(
-              static_cast<int>(j), lightGrid, dataLight, rp.AmbientRadius, error))
+              static_cast<int>(j), lightGrid, dataLight, rp.AmbientRadius, law, error))
         {
           vtkErrorMacro("Cannot render: " << error);
           return false;
@@ -206,19 +208,22 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
       }
       else
       {
-        state.Volume = avs::ComputeLightVolume(in.Averaged,
+        state.Volume = avs::ComputeLightVolume(
+          in.Averaged,
           lightGrid,
           dataLight,
           in.Slice,
           rp.AmbientRadius,
           nullptr,
-          [this, j, n](double v) { this->UpdateProgress((j + v) / static_cast<double>(n)); });
+          [this, j, n](double v) { this->UpdateProgress((j + v) / static_cast<double>(n)); },
+          law);
         changed = true;
       }
       state.DataFrame = dataLight;
       state.AveragedVersion = in.AveragedVersion;
       state.SliceVersion = in.SliceVersion;
       state.Radius = rp.AmbientRadius;
+      state.Law = law;
       state.Built = true;
       rebuilt = true;
       ++this->NumberOfLightVolumeRebuilds;

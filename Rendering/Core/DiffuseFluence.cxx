@@ -14,13 +14,24 @@ GridGeometry DiffusionGeometry(const GridGeometry& data, int maximum)
   return data.Capped(std::max(2, maximum));
 }
 
+double DiffusionSourceWeight(TubeLaw law, double albedo, double anisotropy)
+{
+  return law == TubeLaw::DirectBeam ? albedo : albedo * (1.0 - anisotropy);
+}
+
 std::array<Grid, 3> DiffusionSource(const Grid& averaged,
   const std::vector<Light>& lights,
   const std::vector<Grid>& lightVolumes,
   const GridGeometry& target,
   const DiffusionSettings& settings)
 {
-  const double weight = settings.Albedo * (1.0 - settings.Anisotropy);
+  std::vector<double> weights, toCentre;
+  for (const Light& light : lights)
+  {
+    const TubeLaw law = TubeLawFor(true, light.Type);
+    weights.push_back(DiffusionSourceWeight(law, settings.Albedo, settings.Anisotropy));
+    toCentre.push_back(law == TubeLaw::DirectBeam ? settings.AmbientRadius : 0.0);
+  }
   std::array<Grid, 3> q{ Grid(target), Grid(target), Grid(target) };
   const auto& n = target.Dimensions;
   ParallelFor(n[2],
@@ -38,13 +49,16 @@ std::array<Grid, 3> DiffusionSource(const Grid& averaged,
             {
               for (std::size_t l = 0; l < lights.size() && l < lightVolumes.size(); ++l)
               {
-                e = e + lights[l].FreeIrradiance(world) * lightVolumes[l].SampleWorld(world);
+                e = e +
+                  lights[l].FreeIrradiance(world) *
+                    (weights[l] * std::exp(-toCentre[l] * sigma) *
+                      lightVolumes[l].SampleWorld(world));
               }
             }
             const std::size_t index = target.Index(i, j, static_cast<int>(k));
             for (int c = 0; c < 3; ++c)
             {
-              q[c].Values[index] = static_cast<float>(weight * sigma * e[c]);
+              q[c].Values[index] = static_cast<float>(sigma * e[c]);
             }
           }
     });

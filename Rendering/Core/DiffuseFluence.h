@@ -3,17 +3,20 @@
 // equation on a coarse grid, solved by a fixed number of red-black SOR sweeps.
 //
 //   -div(D grad phi) + sigma_a phi = q,   D = 1 / (3 sigma'),   sigma' = sigma~t (1 - albedo g),
-//   sigma_a = (1 - albedo) sigma~t,       q = albedo (1 - g) sigma~t sum_j E_j^free T~_j,
+//   sigma_a = (1 - albedo) sigma~t,       q = sigma~t sum_j w_j E_j^free T~_j,
 //
-// with sigma~t the averaged extinction (section 3), T~_j the light volumes (section 5) and
-// E_j^free the lights' free irradiance (RGB: phi has three channels). D is limited to
-// TransportLengthLimit / 3; cells with sigma' h < VacuumOpticalDepth are vacuum; a face between the
-// medium and vacuum (or the grid's border) carries Marshak's condition phi = 2 D dphi/dn. The ray
-// caster adds T (1 - exp(-sigma_t dt)) albedo c phi / (4 pi) per sample.
+// with sigma~t the averaged extinction (section 3), T~_j the light volumes (section 5; for
+// positional lights the direct beam, TubeLaw::DirectBeam, taken from the ball's entry on to x by
+// exp(-r sigma~t)), w_j = DiffusionSourceWeight (albedo (1 - g) for directional lights, albedo for
+// positional ones) and E_j^free the lights' free irradiance (RGB: phi has three channels). D is
+// limited to TransportLengthLimit / 3; cells with sigma' h < VacuumOpticalDepth are vacuum; a face
+// between the medium and vacuum (or the grid's border) carries Marshak's condition phi = 2 D
+// dphi/dn. The ray caster adds T (1 - exp(-sigma_t dt)) albedo c phi / (4 pi) per sample.
 #ifndef avs_DiffuseFluence_h
 #define avs_DiffuseFluence_h
 
 #include "Grid.h"
+#include "LightVolume.h"
 #include "Lights.h"
 
 #include <array>
@@ -30,6 +33,9 @@ struct DiffusionSettings
   int Iterations = 64;               ///< red-black SOR sweeps (each: red then black cells)
   double Relaxation = 1.85;          ///< SOR factor omega in (0, 2)
   double TransportLengthLimit = 1.0; ///< 1 / sigma' at most (world units; 8 r in the renderers)
+  /// r: a light volume holds T where the light enters the ball around x; a direct-beam tube's
+  /// source takes it the ball's near half further, to x: exp(-r sigma~t(x)).
+  double AmbientRadius = 0.0;
 };
 
 /// Cells whose reduced optical depth sigma' h (h the mean spacing) is below this are vacuum:
@@ -39,6 +45,13 @@ constexpr double VacuumOpticalDepth = 1e-3;
 
 /// The transport mean free path limit of the renderers, in ambient radii.
 constexpr double TransportLengthLimitInRadii = 16.0;
+
+/// The share of sigma~t E T~ that a light's tube gives the diffusion as its source, by the law of
+/// its tube (TubeLawFor(true, type)): albedo (1 - g) where the tube's F keeps the
+/// forward-scattered share g (Forward), albedo where it carries the direct light alone
+/// (DirectBeam: all scattered light goes to the diffusion, and the light volume's T at the ball's
+/// entry is taken on to x by exp(-r sigma~t), DiffusionSettings::AmbientRadius).
+double DiffusionSourceWeight(TubeLaw law, double albedo, double anisotropy);
 
 /// The diffusion grid: the light grid (or any grid over the data's lattice box) capped at
 /// `maximum` points per axis.

@@ -70,8 +70,11 @@ double March(const Grid& averaged,
   double radius,
   const Vec3& x0,
   const Vec3& x,
-  std::uint64_t& steps)
+  std::uint64_t& steps,
+  TubeLaw law)
 {
+  auto factor = [&](double tau)
+  { return law == TubeLaw::DirectBeam ? std::exp(-2.0 * tau) : slice.ForwardTransport(tau); };
   const double distance = Length(x - x0);
   if (!(distance > 0.0))
   {
@@ -85,14 +88,19 @@ double March(const Grid& averaged,
   for (std::int64_t i = 0; i < n; ++i)
   {
     const Vec3 m = x - d * ((2.0 * i + 1.0) * radius);
-    t *= slice.ForwardTransport(radius * SampleLocal(averaged, m));
+    t *= factor(radius * SampleLocal(averaged, m));
   }
   const Vec3 rest = x0 + d * (eta * radius);
-  const double f = slice.ForwardTransport(radius * SampleLocal(averaged, rest));
+  const double f = factor(radius * SampleLocal(averaged, rest));
   steps += static_cast<std::uint64_t>(n) + 1;
   return t * ((1.0 - eta) + eta * f);
 }
 } // namespace
+
+TubeLaw TubeLawFor(bool extended, LightType type)
+{
+  return extended && type == LightType::Positional ? TubeLaw::DirectBeam : TubeLaw::Forward;
+}
 
 std::array<int, 3> LightVolumeDimensions(const std::array<int, 3>& dims, int maximum)
 {
@@ -110,7 +118,8 @@ double TransmittanceBefore(const Grid& averaged,
   double radius,
   const Vec3& world,
   double shortenBy,
-  std::uint64_t* steps)
+  std::uint64_t* steps,
+  TubeLaw law)
 {
   const GridGeometry& geometry = averaged.Geometry;
   const Vec3 o = geometry.WorldToLocal(world);
@@ -119,7 +128,7 @@ double TransmittanceBefore(const Grid& averaged,
   const double distance = Length(o - x0);
   const Vec3 end = distance > shortenBy ? x0 + (o - x0) * ((distance - shortenBy) / distance) : x0;
   std::uint64_t count = 0;
-  const double t = March(averaged, slice, radius, x0, end, count);
+  const double t = March(averaged, slice, radius, x0, end, count, law);
   if (steps)
   {
     *steps += count;
@@ -133,9 +142,10 @@ double TubeTransmittance(const Grid& averaged,
   const ScatteringSlice& slice,
   double radius,
   const Vec3& world,
-  std::uint64_t* steps)
+  std::uint64_t* steps,
+  TubeLaw law)
 {
-  return TransmittanceBefore(averaged, light, slice, radius, world, 0.0, steps);
+  return TransmittanceBefore(averaged, light, slice, radius, world, 0.0, steps, law);
 }
 
 double BallEntryTransmittance(const Grid& averaged,
@@ -143,9 +153,10 @@ double BallEntryTransmittance(const Grid& averaged,
   const ScatteringSlice& slice,
   double radius,
   const Vec3& world,
-  std::uint64_t* steps)
+  std::uint64_t* steps,
+  TubeLaw law)
 {
-  return TransmittanceBefore(averaged, light, slice, radius, world, radius, steps);
+  return TransmittanceBefore(averaged, light, slice, radius, world, radius, steps, law);
 }
 
 Grid ComputeLightVolume(const Grid& averaged,
@@ -154,13 +165,14 @@ Grid ComputeLightVolume(const Grid& averaged,
   const ScatteringSlice& slice,
   double radius,
   LightVolumeStatistics* statistics,
-  const std::function<void(double)>& progress)
+  const std::function<void(double)>& progress,
+  TubeLaw law)
 {
   std::uint64_t steps = 0;
   Grid out = FillGrid(
     target,
     [&](const Vec3& world, std::uint64_t& work)
-    { return BallEntryTransmittance(averaged, light, slice, radius, world, &work); },
+    { return BallEntryTransmittance(averaged, light, slice, radius, world, &work, law); },
     &steps,
     progress);
   if (statistics)

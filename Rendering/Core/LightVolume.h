@@ -31,6 +31,22 @@
 namespace avs
 {
 
+/// How a tube passes the light on from ball to ball.
+enum class TubeLaw
+{
+  /// F(tau, g, albedo) per ball (ALGORITHM.md section 5): the direct light and the light
+  /// scattered forwards (the paper's model; the extended model's directional lights).
+  Forward,
+  /// exp(-2 tau) per ball: the unscattered light alone, which follows the light's own falloff
+  /// (the extended model's positional lights, whose scattered light the diffusion solve carries;
+  /// ARCHITECTURE.md, "Beyond the paper", says why).
+  DirectBeam
+};
+
+/// The law of a light volume of a light of `type` in the paper's model (`extended` false) or the
+/// extended one.
+TubeLaw TubeLawFor(bool extended, LightType type);
+
 struct LightVolumeStatistics
 {
   std::uint64_t Steps = 0; ///< balls marched, over all voxels
@@ -45,7 +61,8 @@ Grid ComputeLightVolume(const Grid& averaged,
   const ScatteringSlice& slice,
   double radius,
   LightVolumeStatistics* statistics = nullptr,
-  const std::function<void(double)>& progress = {});
+  const std::function<void(double)>& progress = {},
+  TubeLaw law = TubeLaw::Forward);
 
 /// The tube transmittance T at one world point.
 double TubeTransmittance(const Grid& averaged,
@@ -53,7 +70,8 @@ double TubeTransmittance(const Grid& averaged,
   const ScatteringSlice& slice,
   double radius,
   const Vec3& world,
-  std::uint64_t* steps = nullptr);
+  std::uint64_t* steps = nullptr,
+  TubeLaw law = TubeLaw::Forward);
 
 /// T where the light enters the ball of radius `radius` around a world point: at distance
 /// max(D - r, 0) from x0 on the light path (what ComputeLightVolume stores per point).
@@ -62,7 +80,8 @@ double BallEntryTransmittance(const Grid& averaged,
   const ScatteringSlice& slice,
   double radius,
   const Vec3& world,
-  std::uint64_t* steps = nullptr);
+  std::uint64_t* steps = nullptr,
+  TubeLaw law = TubeLaw::Forward);
 
 /// Dimensions of a light volume for data of dimensions `dims` capped at `maximum` per axis,
 /// keeping the aspect ratio.

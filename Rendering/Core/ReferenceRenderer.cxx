@@ -80,6 +80,7 @@ std::vector<Grid> ComputeDiffuse(const Grid& averaged,
   settings.Anisotropy = p.Anisotropy;
   settings.Iterations = p.DiffusionIterations;
   settings.TransportLengthLimit = TransportLengthLimitInRadii * p.AmbientRadius;
+  settings.AmbientRadius = p.AmbientRadius;
   const GridGeometry target =
     DiffusionGeometry(averaged.Geometry, p.DiffusionVolumeMaximumDimension);
   const Grid sigma = ResampleTrilinear(averaged, target);
@@ -145,13 +146,15 @@ bool Precompute(const VolumeScene& scene,
     const std::size_t n = scene.Lights.size();
     for (std::size_t j = 0; j < n; ++j)
     {
-      out.LightVolumes.push_back(ComputeLightVolume(out.Averaged,
+      out.LightVolumes.push_back(ComputeLightVolume(
+        out.Averaged,
         lightGeometry,
         scene.Lights[j],
         out.Slice,
         p.AmbientRadius,
         nullptr,
-        [&](double v) { report(0.2 + 0.7 * (j + v) / n); }));
+        [&](double v) { report(0.2 + 0.7 * (j + v) / n); },
+        TubeLawFor(p.Model == ScatteringModel::Extended, scene.Lights[j].Type)));
     }
     if (p.Model == ScatteringModel::Extended)
     {

@@ -183,7 +183,7 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   // Lights in the data's local frame (a rigid map of the data's frame: distances and cones
   // stay).
   float position[8][3] = {}, axis[8][3] = {}, irradiance[8][3] = {}, attenuation[8][3] = {};
-  float coneCos[8] = {}, exponent[8] = {};
+  float coneCos[8] = {}, exponent[8] = {}, weight[8] = {}, toCentre[8] = {};
   for (int j = 0; j < n; ++j)
   {
     const avs::Light& l = lights[j];
@@ -198,6 +198,9 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
     }
     coneCos[j] = l.IsSpot() ? static_cast<float>(std::cos(l.ConeAngle * avs::Pi / 180.0)) : -2.0f;
     exponent[j] = l.IsSpot() ? static_cast<float>(l.Exponent) : 0.0f;
+    const avs::TubeLaw law = avs::TubeLawFor(true, l.Type);
+    weight[j] = static_cast<float>(avs::DiffusionSourceWeight(law, p.Albedo, p.Anisotropy));
+    toCentre[j] = law == avs::TubeLaw::DirectBeam ? static_cast<float>(p.AmbientRadius) : 0.0f;
   }
   glUniform3fv(location("u_lightPosition"), 8, &position[0][0]);
   glUniform3fv(location("u_lightAxis"), 8, &axis[0][0]);
@@ -205,6 +208,8 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   glUniform3fv(location("u_lightAttenuation"), 8, &attenuation[0][0]);
   glUniform1fv(location("u_lightConeCos"), 8, coneCos);
   glUniform1fv(location("u_lightExponent"), 8, exponent);
+  glUniform1fv(location("u_sourceWeight"), 8, weight);
+  glUniform1fv(location("u_toCentre"), 8, toCentre);
   glUniform3i(location("u_dimensions"), d[0], d[1], d[2]);
   glUniform3f(location("u_spacing"),
     static_cast<float>(grid.Spacing.x),

@@ -26,6 +26,7 @@ bool vtkAVSLightVolumePass::Run(vtkAVSVolumeTextures& textures,
   const avs::GridGeometry& lightGrid,
   const avs::Light& light,
   double radius,
+  avs::TubeLaw law,
   std::string& error)
 {
   const auto& d = lightGrid.Dimensions;
@@ -66,6 +67,7 @@ bool vtkAVSLightVolumePass::Run(vtkAVSVolumeTextures& textures,
   glUniform1i(location("u_tauNodes"), static_cast<GLint>(textures.LogGain.size()));
   glUniform1f(location("u_tauMaximum"), textures.TableTauMaximum);
   glUniform1f(location("u_radius"), static_cast<float>(radius));
+  glUniform1i(location("u_directBeam"), law == avs::TubeLaw::DirectBeam ? 1 : 0);
   const bool positional = light.Type == avs::LightType::Positional;
   const avs::Vec3 l = positional
     ? lightGrid.WorldToLocal(light.Position)

@@ -12,6 +12,7 @@
 #define vtkAVSLightVolumePass_h
 
 #include "Grid.h"
+#include "LightVolume.h"
 #include "Lights.h"
 
 #include <string>
@@ -29,12 +30,14 @@ public:
   /// textures' format (vtkAVSVolumeTextures::LightVolumeFormat); false when it does not compile.
   bool Build(int maximumTauNodes, bool software);
   /// Runs the pass for light `index` (the caller checked for compute shaders, the averaged
-  /// extinction on the light grid and a table slice of at most `maximumTauNodes` nodes).
+  /// extinction on the light grid and a table slice of at most `maximumTauNodes` nodes); `law`
+  /// as avs::ComputeLightVolume's.
   bool Run(vtkAVSVolumeTextures& textures,
     int index,
     const avs::GridGeometry& lightGrid,
     const avs::Light& light,
     double radius,
+    avs::TubeLaw law,
     std::string& error);
   /// Forgets the program, deleting it when its context is current (`context`).
   void ReleaseGraphicsResources(bool context);

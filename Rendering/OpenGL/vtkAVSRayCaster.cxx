@@ -202,6 +202,7 @@ bool vtkAVSRayCaster::ComputeLightVolume(int index,
   const avs::GridGeometry& lightGrid,
   const avs::Light& light,
   double radius,
+  avs::TubeLaw law,
   std::string& error)
 {
   const std::vector<float>& logGain = this->Textures.LogGain;
@@ -216,7 +217,7 @@ bool vtkAVSRayCaster::ComputeLightVolume(int index,
       std::to_string(MaximumTauNodes) + ")";
     return false;
   }
-  return this->LightVolumePass.Run(this->Textures, index, lightGrid, light, radius, error);
+  return this->LightVolumePass.Run(this->Textures, index, lightGrid, light, radius, law, error);
 }
 
 bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::string& error)

@@ -15,6 +15,7 @@
 
 #include "ClipRegion.h"
 #include "Grid.h"
+#include "LightVolume.h"
 #include "Lights.h"
 #include "ReferenceRenderer.h"
 #include "ScatteringParameters.h"
@@ -116,11 +117,13 @@ public:
   /// Light volumes computed on the GPU: tube-marches light `index` (< 8, given in the data's
   /// frame) on `lightGrid` into its channel of the packed textures (allocated once per size).
   /// Needs the averaged extinction (ComputeAveragedExtinction on the same grid) and the table
-  /// slice.
+  /// slice. `law` as avs::ComputeLightVolume's (TubeLaw::DirectBeam: the extended model's
+  /// positional lights).
   bool ComputeLightVolume(int index,
     const avs::GridGeometry& lightGrid,
     const avs::Light& light,
     double radius,
+    avs::TubeLaw law,
     std::string& error);
   bool UploadOcclusion(const avs::Grid& occlusion, std::string& error);
   bool UploadTableSlice(const avs::ScatteringSlice& slice, std::string& error);

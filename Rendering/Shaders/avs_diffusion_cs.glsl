@@ -3,7 +3,8 @@
 // which the tests hold this one against; ARCHITECTURE.md, "Beyond the paper", has the model).
 // The diffusion grid spans the data's lattice box; positions are in the data's local frame
 // (lights too: the free irradiance depends only on distances and the cone). Two stages:
-//  u_stage 0, the source: per cell, q = albedo (1 - g) sigma~t sum_j E_j^free T~_j into u_source
+//  u_stage 0, the source: per cell, q = sigma~t sum_j w_j E_j^free T~_j into u_source (T~_j of
+//    direct-beam tubes taken from the ball's entry on to the cell: exp(-r sigma~t))
 //    (rgb), and (phi, sigma~t) = (0, sigma~t) into u_phi, from the averaged extinction and the
 //    packed light volumes on the light grid;
 //  u_stage 1, one SOR half-sweep: the cells with (i + j + k) % 2 == u_colour relax
@@ -25,6 +26,8 @@ uniform sampler3D u_lightVolumes0;
 uniform sampler3D u_lightVolumes1;
 uniform float u_albedo;
 uniform float u_anisotropy;
+uniform float u_sourceWeight[8]; // DiffusionSourceWeight of each light's tube law
+uniform float u_toCentre[8];     // r for direct-beam tubes (T at the ball's entry, on to x), else 0
 uniform float u_relaxation;
 uniform float u_transportLimit;  // 1 / sigma' at most
 uniform float u_vacuum;          // VacuumOpticalDepth / mean spacing
@@ -50,10 +53,10 @@ void Source(ivec3 cell)
     vec4 tubes1 = vec4(1.0);
 #endif
     vec3 propagation, irradiance;
-#define AVS_ADD_SOURCE(j) LightAt(j, x, propagation, irradiance); e += irradiance * Tube(j, tubes0, tubes1);
+#define AVS_ADD_SOURCE(j) LightAt(j, x, propagation, irradiance); e += irradiance * (u_sourceWeight[j] * exp(-u_toCentre[j] * sigma) * Tube(j, tubes0, tubes1));
     AVS_FOR_EACH_LIGHT(AVS_ADD_SOURCE)
   }
-  imageStore(u_source, cell, vec4(u_albedo * (1.0 - u_anisotropy) * sigma * e, 0.0));
+  imageStore(u_source, cell, vec4(sigma * e, 0.0));
   imageStore(u_phi, cell, vec4(0.0, 0.0, 0.0, sigma));
 }
 

@@ -23,6 +23,9 @@ uniform float u_logGain[AVS_MAXIMUM_TAU_NODES];
 uniform int u_tauNodes;
 uniform float u_tauMaximum;
 uniform float u_radius;
+// 0: each ball passes on F (the paper's tube); 1: the direct light alone, exp(-2 tau) per ball
+// (the extended model's positional lights; TubeLaw in LightVolume.h).
+uniform int u_directBeam;
 
 uniform int u_positional;       // 0: directional, 1: positional
 uniform vec3 u_light;           // propagation direction (directional) or position (positional)
@@ -55,6 +58,10 @@ float LogForwardTransport(float tau)
   if (!(tau > 0.0))
   {
     return 0.0;
+  }
+  if (u_directBeam != 0)
+  {
+    return -2.0 * tau;
   }
   // Linear in log(1 + tau) between the nodes, as ScatteringSlice::ForwardTransport.
   float x = log(1.0 + min(tau, u_tauMaximum)) * g_tauScale;

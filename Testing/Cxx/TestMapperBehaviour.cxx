@@ -140,6 +140,9 @@ int main(int argc, char* argv[])
     const auto extended = scene.Render();
     AVS_CHECK(mapper->GetNumberOfDiffusionRebuilds() == 1);
     AVS_CHECK(Psnr(paper, extended) < 45.0);
+    // The positional light's tube carries the direct beam in the extended model (TubeLaw): its
+    // light volume alone is rebuilt; the directional light keeps the paper's.
+    AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 16);
     scene.Renderer->GetActiveCamera()->Azimuth(10);
     scene.Render();
     AVS_CHECK(mapper->GetNumberOfDiffusionRebuilds() == 1);
@@ -152,6 +155,7 @@ int main(int argc, char* argv[])
     mapper->SetScatteringModelToPaper();
     AVS_CHECK(Psnr(paper, scene.Render()) > 60.0);
     AVS_CHECK(mapper->GetNumberOfDiffusionRebuilds() == 3);
+    AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 21);
 
     std::ostringstream os;
     mapper->Print(os);

@@ -2,7 +2,8 @@
 // the fluence is q / sigma_a; without absorption the light of a point source leaves through the
 // Marshak boundary and the solve converges; vacuum holds no fluence; the fluence peaks at the
 // source and falls off towards the boundary; the default sweeps converge on a dense ball; the
-// source is albedo (1 - g) sigma~t E T, zero at albedo 0.
+// source is albedo (1 - g) sigma~t E T (albedo sigma~t E T for positional lights, whose tubes
+// carry the direct beam), zero at albedo 0.
 #include "DiffuseFluence.h"
 
 #include <gtest/gtest.h>
@@ -119,6 +120,22 @@ TEST(DiffuseFluence, Source)
   {
     EXPECT_NEAR(q[c].At(3, 4, 5), 0.8 * 0.75 * 4.0 * (c + 1) * 0.5, 1e-5);
   }
+  // A positional light's tube carries the direct light alone (TubeLaw::DirectBeam): all the
+  // light scattered out of it, albedo sigma~t E T, is the source, with T taken from the ball's
+  // entry on to the point (exp(-r sigma~t)); directional lights do not move theirs.
+  s.AmbientRadius = 0.1;
+  const Light lamp = Light::Point({ 0.3, 0.2, 0.1 }, { 1, 2, 3 });
+  const Vec3 x = g.IndexToWorld({ 3, 4, 5 });
+  const std::array<Grid, 3> qp = DiffusionSource(sigma, { lamp }, tubes, g, s);
+  const std::array<Grid, 3> qd = DiffusionSource(sigma, { light }, tubes, g, s);
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(
+      qp[c].At(3, 4, 5), 0.8 * 4.0 * lamp.FreeIrradiance(x)[c] * 0.5 * std::exp(-0.4), 1e-5);
+    EXPECT_NEAR(qd[c].At(3, 4, 5), 0.8 * 0.75 * 4.0 * (c + 1) * 0.5, 1e-5);
+  }
+  EXPECT_NEAR(DiffusionSourceWeight(TubeLaw::Forward, 0.8, 0.25), 0.6, 1e-12);
+  EXPECT_NEAR(DiffusionSourceWeight(TubeLaw::DirectBeam, 0.8, 0.25), 0.8, 1e-12);
   s.Albedo = 0.0;
   EXPECT_EQ(DiffusionSource(sigma, { light }, tubes, g, s)[1].At(3, 4, 5), 0.0f);
 }

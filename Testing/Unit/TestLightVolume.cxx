@@ -1,7 +1,8 @@
 // Tube-marched light volumes: the albedo-0 limit is a shadow ray with step 2r, a light volume
 // holds the tube transmittance where the light enters the ball around each point, empty space
 // lets everything through, a slab casts its shadow, point lights inside and outside the box, the
-// light behind a dense surface does not depend on the empty space before it (no bands).
+// light behind a dense surface does not depend on the empty space before it (no bands); the
+// extended model's positional lights take the direct beam, a shadow ray whatever the albedo.
 #include "AveragedExtinction.h"
 #include "LightVolume.h"
 #include "ScatteringTable.h"
@@ -289,4 +290,37 @@ TEST(LightVolume, DimensionsAreCappedKeepingTheAspect)
   const auto same = LightVolumeDimensions({ 64, 32, 16 }, 256);
   EXPECT_EQ(same[0], 64);
   EXPECT_EQ(same[2], 16);
+}
+
+TEST(LightVolume, TheDirectBeamIsAShadowRayWhateverTheAlbedo)
+{
+  // The extended model's positional lights (TubeLaw::DirectBeam): exp(-2 tau) per ball, the
+  // albedo-0 shadow ray, whatever F of the slice's g and albedo is.
+  const GridGeometry g = Box(24);
+  const Grid averaged = AverageExtinction(ShellExtinction(g, 0.4), 2.0);
+  const ScatteringSlice slice = Shipped().Slice(0.6, 0.95);
+  const double r = 1.3;
+  const Vec3 p{ 11.5, 10.2, 12.7 };
+  const Light lamp = Light::Point(p, { 1, 1, 1 });
+  const Grid beam =
+    ComputeLightVolume(averaged, g, lamp, slice, r, nullptr, {}, TubeLaw::DirectBeam);
+  const Grid forward = ComputeLightVolume(averaged, g, lamp, slice, r);
+  double brighter = 0.0;
+  for (int k = 0; k < 24; k += 3)
+    for (int j = 0; j < 24; j += 2)
+      for (int i = 0; i < 24; ++i)
+      {
+        const Vec3 x{ double(i), double(j), double(k) };
+        EXPECT_NEAR(beam.At(i, j, k), ShadowRay(averaged, p, BallEntry(p, x, r), r), 1e-6);
+        EXPECT_NEAR(TubeTransmittance(averaged, lamp, slice, r, x, nullptr, TubeLaw::DirectBeam),
+          ShadowRay(averaged, p, x, r),
+          1e-6);
+        brighter = std::max(brighter, double(forward.At(i, j, k) - beam.At(i, j, k)));
+      }
+  // F carries the forward-scattered light too: behind the shell the paper's tube is brighter.
+  EXPECT_GT(brighter, 0.05);
+  // The law: the paper's tube everywhere in the paper's model and for directional lights.
+  EXPECT_EQ(TubeLawFor(false, LightType::Positional), TubeLaw::Forward);
+  EXPECT_EQ(TubeLawFor(true, LightType::Directional), TubeLaw::Forward);
+  EXPECT_EQ(TubeLawFor(true, LightType::Positional), TubeLaw::DirectBeam);
 }
