@@ -77,7 +77,7 @@ void vtkAVSVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
   }
 }
 
-bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool interactive)
+bool vtkAVSVolumeMapper::PrepareScene(vtkVolume* volume)
 {
   auto& in = *this->Internal;
   std::string error;
@@ -235,7 +235,6 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   p.TerminationTransmittance = this->TerminationTransmittance;
   this->FillParameters(p);
   in.Parameters = p.Resolve(in.Whole); // the automatic radius: the whole image's
-  const avs::ScatteringParameters& rp = in.Parameters;
 
   // Transforms: data -> world is the volume's matrix; index -> data is the grid's placement.
   const avs::GridGeometry& g = in.Scene.Scalars.Geometry;
@@ -252,7 +251,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   dataToWorld->DeepCopy(volume->GetMatrix());
   vtkMatrix4x4::Multiply4x4(dataToWorld, indexToData, in.WorldToIndex);
   in.WorldToIndex->Invert();
-  vtkNew<vtkMatrix4x4> worldToData;
+  vtkMatrix4x4* worldToData = in.WorldToData;
   worldToData->DeepCopy(dataToWorld);
   worldToData->Invert();
 
@@ -278,6 +277,19 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     in.Scene.Clip = clip;
     ++in.OpacityVersion;
   }
+
+  return true;
+}
+
+bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool interactive)
+{
+  auto& in = *this->Internal;
+  std::string error;
+  if (!this->PrepareScene(volume))
+  {
+    return false;
+  }
+  const avs::ScatteringParameters& rp = in.Parameters;
 
   // Lights in world space, at most 8.
   in.WorldLights = vtkAVSSceneTranslator::ToLights(
@@ -328,19 +340,27 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     in.RayCaster.SupportsComputeShaders() &&
     table->Axes.NumberOfTau <= vtkAVSRayCaster::MaximumTauNodes;
   // (A piece of a larger whole computes its share of the averaged extinction on the CPU.)
-  if ((!gpuScattering || this->LitAsPiece) &&
-    (in.ExtinctionKey[0] != in.DataVersion || in.ExtinctionKey[1] != in.OpacityVersion))
+  if (!gpuScattering || this->LitAsPiece)
   {
-    in.Extinction = avs::ExtinctionGrid(in.Scene);
-    in.ExtinctionKey[0] = in.DataVersion;
-    in.ExtinctionKey[1] = in.OpacityVersion;
+    this->UpdateExtinction();
   }
 
   if (effect == 1)
   {
     return this->PrepareOcclusion();
   }
-  return this->PrepareScattering(table, gpuScattering, worldToData, interactive);
+  return this->PrepareScattering(table, gpuScattering, in.WorldToData, interactive);
+}
+
+void vtkAVSVolumeMapper::UpdateExtinction()
+{
+  auto& in = *this->Internal;
+  if (in.ExtinctionKey[0] != in.DataVersion || in.ExtinctionKey[1] != in.OpacityVersion)
+  {
+    in.Extinction = avs::ExtinctionGrid(in.Scene);
+    in.ExtinctionKey[0] = in.DataVersion;
+    in.ExtinctionKey[1] = in.OpacityVersion;
+  }
 }
 
 void vtkAVSVolumeMapper::WarnAboutShading(vtkVolumeProperty* property)

@@ -57,8 +57,10 @@
 #include "vtkRenderingAmbientScatteringModule.h" // for export macro
 #include "vtkVolumeMapper.h"
 
+#include <array>  // for std::array
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
+#include <vector> // for std::vector
 
 namespace avs
 {
@@ -212,6 +214,20 @@ public:
   ///@}
 
   /**
+   * Distributed rendering, collective: brings the whole's averaged extinction up to date from
+   * every process's piece (see WholeExtent), for `volume` (its property and matrix). Call it on
+   * every process of the Controller before each render, whether or not the process's piece is
+   * visible, culled or empty (ParaView's representation does, in its render request): one
+   * AllReduce of two ints per call, and when a piece changed, the AllGather of the pieces'
+   * boxes and the AllReduce of the light grid. Once it was called, rendering never
+   * communicates, so a process whose volume is culled or has no piece cannot hold the others
+   * up. Without it, a render that must rebuild the averaged extinction communicates itself,
+   * which needs every process to render its piece in the same frames. Nothing happens without a
+   * controller of more than one process.
+   */
+  void UpdatePieceLighting(vtkVolume* volume);
+
+  /**
    * Whether the last frame lit its input as a piece of a larger whole (see WholeExtent).
    */
   vtkGetMacro(LitAsPiece, vtkTypeBool);
@@ -334,6 +350,10 @@ private:
   /// Converts, checks, uploads and precomputes what changed; an interactive frame keeps the light
   /// volumes of camera-following lights.
   bool Prepare(vtkRenderer* renderer, vtkVolume* volume, bool interactive);
+  /// Prepare's first part, without a renderer or GL: the input, the mask, the property, the
+  /// piece, the parameters, the transforms and the clip region, converted and checked when they
+  /// changed (errors reported).
+  bool PrepareScene(vtkVolume* volume);
   /// Prepare's precomputation (vtkAVSVolumeMapperPrecompute.cxx), after the uploads of the data
   /// and the classification: the ambient-occlusion volume; for ambient scattering the table
   /// slice, the averaged extinction, the light volumes (`gpuScattering`: on the GPU) and the
@@ -348,6 +368,8 @@ private:
   /// whole on `lightGrid` from the pieces' shares (collective).
   bool ResolvePiece(vtkImageData* input, std::string& error);
   bool AverageAcrossPieces(const avs::GridGeometry& lightGrid, std::string& error);
+  /// sigma_t on the CPU (Internals' Extinction), rebuilt when the data or the opacity changed.
+  void UpdateExtinction();
   // One warning when the property's shading flags ask for what this mapper does not do.
   void WarnAboutShading(vtkVolumeProperty* property);
   std::string ShadingWarning;

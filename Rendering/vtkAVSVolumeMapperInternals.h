@@ -109,8 +109,17 @@ struct vtkAVSVolumeMapper::Internals
   // when not lit as a piece) and the piece's first sample in it.
   avs::GridGeometry Whole;
   std::array<int, 3> PieceOffset{ 0, 0, 0 };
+  /// UpdatePieceLighting: it was called (then rendering never communicates); the sum it made
+  /// (in Averaged) and its version; this piece's last box and the key of what it was made from.
+  bool PieceLightingUpdated = false;
+  int SumVersion = 0;
+  int AveragedSum = -1;
+  std::vector<double> ShareKey;
+  std::vector<int> SharedBoxes;
+  avs::Grid Share; ///< this piece's share of the averaged extinction (UpdatePieceLighting)
 
   vtkNew<vtkMatrix4x4> WorldToIndex;
+  vtkNew<vtkMatrix4x4> WorldToData;
   avs::ScatteringParameters Parameters;
   std::vector<avs::Light> WorldLights;
   std::vector<bool> FollowsCamera; ///< per light: a headlight or camera light

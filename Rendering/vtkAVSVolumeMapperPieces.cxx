@@ -4,9 +4,11 @@
 
 #include "PieceAveraging.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkCommunicator.h"
 #include "vtkMultiProcessController.h"
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 
@@ -116,4 +118,115 @@ bool vtkAVSVolumeMapper::AverageAcrossPieces(const avs::GridGeometry& lightGrid,
   }
   this->UpdateProgress(1.0);
   return true;
+}
+
+void vtkAVSVolumeMapper::UpdatePieceLighting(vtkVolume* volume)
+{
+  auto& in = *this->Internal;
+  vtkMultiProcessController* controller = this->Controller;
+  if (!controller || controller->GetNumberOfProcesses() < 2)
+  {
+    return;
+  }
+  in.PieceLightingUpdated = true; // from now on rendering does not communicate
+  // This process's part: a piece of ambient scattering that converts; else nothing (no or an
+  // empty input, another lighting model, an input that is the whole): a box of no samples and a
+  // share of zeros. Every process takes part in the same calls either way.
+  if (vtkAlgorithm* producer = this->GetInputAlgorithm())
+  {
+    producer->Update();
+  }
+  vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
+  const bool piece = this->GetEffect() == 2 && volume && input && input->GetNumberOfPoints() > 0 &&
+    this->PrepareScene(volume) && this->LitAsPiece;
+  const avs::GridGeometry& g = in.Scene.Scalars.Geometry;
+  avs::GridGeometry lightGrid;
+  avs::IndexBox box{ 0, -1, 0, -1, 0, -1 };
+  std::vector<double> key;
+  if (piece)
+  {
+    lightGrid = in.Whole.Capped(in.Parameters.LightVolumeMaximumDimension);
+    box = avs::PieceBox(in.PieceOffset, g.Dimensions);
+    key = { static_cast<double>(in.DataVersion),
+      static_cast<double>(in.OpacityVersion),
+      in.Parameters.AmbientRadius };
+    for (int a = 0; a < 3; ++a)
+    {
+      key.insert(key.end(),
+        { static_cast<double>(lightGrid.Dimensions[a]),
+          static_cast<double>(in.Whole.Dimensions[a]),
+          static_cast<double>(in.PieceOffset[a]) });
+    }
+  }
+  // Did any piece change, and how long is the light grid (the same on every process that has a
+  // piece)?
+  const std::size_t points = piece ? lightGrid.NumberOfPoints() : 0;
+  if (points > static_cast<std::size_t>(VTK_INT_MAX))
+  {
+    vtkErrorMacro("The light grid of " << points << " points is too large to share.");
+  }
+  const int mine[2] = { key != in.ShareKey ? 1 : 0,
+    static_cast<int>(std::min<std::size_t>(points, VTK_INT_MAX)) };
+  int all[2] = { 0, 0 };
+  controller->AllReduce(mine, all, 2, vtkCommunicator::MAX_OP);
+  in.ShareKey = key;
+  if (!all[0])
+  {
+    return;
+  }
+  // The boxes (which piece keeps the samples that pieces share), every share brought up to
+  // date, their sum.
+  const int processes = controller->GetNumberOfProcesses();
+  std::vector<int> boxes(6 * static_cast<std::size_t>(processes));
+  controller->AllGather(box.data(), boxes.data(), 6);
+  std::vector<avs::IndexBox> earlier;
+  for (int r = 0; r < controller->GetLocalProcessId(); ++r)
+  {
+    avs::IndexBox other;
+    std::copy(boxes.begin() + 6 * r, boxes.begin() + 6 * (r + 1), other.begin());
+    if (other[0] <= other[1] && other[2] <= other[3] && other[4] <= other[5])
+    {
+      earlier.push_back(other);
+    }
+  }
+  if (!piece)
+  {
+    in.Share = avs::Grid();
+  }
+  else if (mine[0] || boxes != in.SharedBoxes || in.Share.Values.size() != points)
+  {
+    this->UpdateExtinction();
+    in.Share = avs::AverageExtinctionShare(
+      in.Extinction, in.PieceOffset, in.Whole, earlier, in.Parameters.AmbientRadius, lightGrid);
+  }
+  in.SharedBoxes = boxes;
+  const std::size_t length = static_cast<std::size_t>(all[1]);
+  const bool agree = !piece || points == length;
+  if (!agree)
+  {
+    vtkErrorMacro("The processes' light grids differ ("
+      << points << " points here, " << length
+      << " elsewhere): every process needs the same WholeExtent and LightVolumeMaximumDimension.");
+  }
+  std::vector<float> send(length, 0.0f), sum(length, 0.0f);
+  if (piece && agree)
+  {
+    send = in.Share.Values;
+  }
+  if (length > 0)
+  {
+    controller->AllReduce(
+      send.data(), sum.data(), static_cast<vtkIdType>(length), vtkCommunicator::SUM_OP);
+  }
+  if (piece && agree)
+  {
+    in.Averaged = avs::Grid(lightGrid, 0.0f);
+    in.Averaged.Values = std::move(sum);
+    ++in.SumVersion;
+  }
+  else if (piece)
+  {
+    in.Averaged = avs::Grid(); // rendering reports it
+    in.ShareKey.clear();       // shared again at the next call
+  }
 }

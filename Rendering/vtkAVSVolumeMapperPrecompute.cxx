@@ -121,13 +121,21 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
     in.PieceOffset[2] };
   if (in.AveragedKey[0] != in.DataVersion || in.AveragedKey[1] != in.OpacityVersion ||
     in.AveragedRadius != rp.AmbientRadius || in.AveragedOnGPU != (gpuScattering ? 1 : 0) ||
-    in.AveragedDimensions != lightGrid.Dimensions || in.AveragedPiece != piece)
+    in.AveragedDimensions != lightGrid.Dimensions || in.AveragedPiece != piece ||
+    in.AveragedSum != in.SumVersion)
   {
     if (this->LitAsPiece)
     {
-      // The pieces' shares summed (collective), then at this piece's voxels for the rays and,
-      // for the GPU light-volume pass, on the light grid.
-      if (!this->AverageAcrossPieces(lightGrid, error) ||
+      // The pieces' shares summed (by UpdatePieceLighting before the render, else here:
+      // collective), then at this piece's voxels for the rays and, for the GPU light-volume
+      // pass, on the light grid.
+      if (in.PieceLightingUpdated && in.Averaged.Values.size() != lightGrid.NumberOfPoints())
+      {
+        vtkErrorMacro("Cannot render: the whole's averaged extinction is not up to date "
+                      "(UpdatePieceLighting must run on every process before each render)");
+        return false;
+      }
+      if ((!in.PieceLightingUpdated && !this->AverageAcrossPieces(lightGrid, error)) ||
         !in.RayCaster.UploadScalarsAveraged(in.Scene, avs::SampleAtPoints(in.Averaged, g), error) ||
         (gpuScattering && !in.RayCaster.UploadAveragedExtinction(in.Averaged, error)))
       {
@@ -163,6 +171,7 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
     in.AveragedRadius = rp.AmbientRadius;
     in.AveragedDimensions = lightGrid.Dimensions;
     in.AveragedPiece = piece;
+    in.AveragedSum = in.SumVersion;
     ++in.AveragedVersion;
     ++this->NumberOfExtinctionRebuilds;
   }

@@ -4,10 +4,11 @@ A wavelet whose pieces ParaView splits along z, seen from the side, lit from abo
 upper piece shades the lower one, so the picture shows whether the light crosses the pieces'
 boundary. Renders the "Ambient Scattering" representation (LightAcrossRanks as given) or
 ParaView's own volume representation (plain, or with its volumetric scattering) and saves
-the picture; prints how many ranks rendered it.
+the picture; prints how many ranks rendered it. "scattering-zoomed" looks closely at the upper
+piece alone.
 
 usage: [mpirun -np N] pvbatch --force-offscreen-rendering DistributedScene.py PLUGIN OUTPUT.png
-           REPRESENTATION (scattering | scattering-per-rank | volume | volume-scattering)
+           KIND (scattering | scattering-per-rank | scattering-zoomed | volume | volume-scattering)
 """
 import sys
 
@@ -18,7 +19,12 @@ SIZE = [200, 200]
 EXTENT = [-24, 24, -24, 24, -24, 24]
 OPACITY = [37.0, 0.0, 0.5, 0.0, 130.0, 0.0, 0.5, 0.0, 277.0, 0.9, 0.5, 0.0]
 SUN = [0.2, 0.1, 1.0]  # directional, scene coordinates: from above
-CAMERA = dict(position=[160.0, -30.0, 10.0], focal_point=[0.0, 0.0, 0.0], view_up=[0.0, 0.0, 1.0])
+CAMERA = dict(position=[160.0, -30.0, 10.0], focal_point=[0.0, 0.0, 0.0], view_up=[0.0, 0.0, 1.0],
+              view_angle=30.0)
+# Close on the upper piece: the lower piece is outside the view, so its rank's renderer culls
+# the volume (the ranks must not wait for each other while rendering).
+ZOOMED = dict(position=[60.0, -10.0, 20.0], focal_point=[0.0, 0.0, 20.0], view_up=[0.0, 0.0, 1.0],
+              view_angle=10.0)
 
 
 def main(plugin, out, kind):
@@ -52,9 +58,11 @@ def main(plugin, out, kind):
     sun.Coords = "Scene"
     sun.Type = "Directional"
     sun.Position = SUN
-    view.CameraPosition = CAMERA["position"]
-    view.CameraFocalPoint = CAMERA["focal_point"]
-    view.CameraViewUp = CAMERA["view_up"]
+    camera = ZOOMED if kind.endswith("-zoomed") else CAMERA
+    view.CameraPosition = camera["position"]
+    view.CameraFocalPoint = camera["focal_point"]
+    view.CameraViewUp = camera["view_up"]
+    view.CameraViewAngle = camera["view_angle"]
     pv.Render(view)
     pv.SaveScreenshot(out, view, ImageResolution=SIZE, TransparentBackground=0)
     print("rendered %s on %d rank(s) into %s" % (kind, ranks, out))

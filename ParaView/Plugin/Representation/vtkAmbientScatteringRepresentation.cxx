@@ -5,6 +5,8 @@
 #include "vtkEmissionAbsorptionVolumeMapper.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
+#include "vtkPVLODVolume.h"
+#include "vtkPVView.h"
 
 vtkStandardNewMacro(vtkAmbientScatteringRepresentation);
 
@@ -148,9 +150,32 @@ std::array<vtkAVSVolumeMapper*, 3> vtkAmbientScatteringRepresentation::Mappers()
     this->AmbientScatteringMapper.GetPointer() };
 }
 
+int vtkAmbientScatteringRepresentation::ProcessViewRequest(vtkInformationRequestKey* request,
+  vtkInformation* inInfo,
+  vtkInformation* outInfo)
+{
+  const int result = this->Superclass::ProcessViewRequest(request, inInfo, outInfo);
+  // Every rank gets the render request (the culling comes later, in the renderer), so the
+  // ranks meet here. The visibility is the same on every rank.
+  if (request == vtkPVView::REQUEST_RENDER() && this->GetVisibility())
+  {
+    this->ShareLightAcrossRanks();
+    if (auto* mapper = vtkAVSVolumeMapper::SafeDownCast(this->VolumeMapper))
+    {
+      mapper->UpdatePieceLighting(this->GetRenderedProp());
+    }
+  }
+  return result;
+}
+
 void vtkAmbientScatteringRepresentation::UpdateMapperParameters()
 {
   this->Superclass::UpdateMapperParameters();
+  this->ShareLightAcrossRanks();
+}
+
+void vtkAmbientScatteringRepresentation::ShareLightAcrossRanks()
+{
   // The whole extent comes from the pipeline (RequestData); every rank has the same.
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   const bool distributed =

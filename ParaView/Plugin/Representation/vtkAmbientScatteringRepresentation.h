@@ -132,14 +132,23 @@ public:
    * Under MPI (more than one process in vtkMultiProcessController::GetGlobalController()): on
    * (the default), the mappers light each rank's piece as a part of the whole image (their
    * WholeExtent and Controller; vtkAVSVolumeMapper), so light and shadows cross the pieces'
-   * boundaries; off, each rank lights its piece alone. Every rank must hold a piece of the image
-   * (ParaView splits image data by extent, so up to as many ranks as the image has samples
-   * along its longest axis).
+   * boundaries; off, each rank lights its piece alone. The ranks share the light in the render
+   * request (ProcessViewRequest), which every rank receives before its renderer culls anything.
    */
   vtkSetMacro(LightAcrossRanks, vtkTypeBool);
   vtkGetMacro(LightAcrossRanks, vtkTypeBool);
   vtkBooleanMacro(LightAcrossRanks, vtkTypeBool);
   ///@}
+
+  /**
+   * The superclass's, and in the render request, on every rank whether its piece is visible or
+   * not, the collective update of the light shared across the ranks
+   * (vtkAVSVolumeMapper::UpdatePieceLighting), so that rendering never waits for a rank whose
+   * piece is culled or empty.
+   */
+  int ProcessViewRequest(vtkInformationRequestKey* request,
+    vtkInformation* inInfo,
+    vtkInformation* outInfo) override;
 
   /**
    * The mapper of the current lighting model.
@@ -153,6 +162,9 @@ protected:
   std::array<vtkAVSVolumeMapper*, 3> Mappers();
   /// The superclass's, then the whole extent and the controller of distributed lighting.
   void UpdateMapperParameters() override;
+  /// The mappers' WholeExtent and Controller: the pipeline's whole extent and the global
+  /// controller under MPI with LightAcrossRanks on, none otherwise.
+  void ShareLightAcrossRanks();
 
   vtkTypeBool LightAcrossRanks = 1;
 
