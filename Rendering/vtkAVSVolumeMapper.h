@@ -192,20 +192,21 @@ public:
    *
    * When the whole extent is larger than the input's, ambient scattering lights the piece as a
    * part of the whole: the automatic ambient radius and the light grid are the whole image's,
-   * each process adds its share of the averaged extinction on that grid to the others' (one
-   * vtkMultiProcessController::AllReduce of at most LightVolumeMaximumDimension^3 floats, and an
-   * AllGather of the pieces' extents, per change of data, transfer function, clipping or radius;
-   * never per camera or light move), and every process marches the light volumes through the
-   * whole, so light and shadows cross the pieces' boundaries. These calls are collective: every
-   * process of the controller must render its (non-empty) piece in the same frames. Samples
-   * that pieces share (the common face of point data, ghost layers) count once, for the piece of
-   * lowest rank. The precomputation of a piece runs on the CPU. Without a controller (or with one
+   * each process adds its share of the averaged extinction on that grid to the others'
+   * (UpdatePieceLighting, called on every process before each render: one
+   * vtkMultiProcessController::AllReduce of at most LightVolumeMaximumDimension^3 floats and an
+   * AllGather of the pieces' extents when the data, transfer function, clipping or radius
+   * changed), and every process marches the light volumes through the whole, so light and
+   * shadows cross the pieces' boundaries. Samples that pieces share (the common face of point
+   * data, ghost layers) count once, for the piece of lowest rank. A piece's share is computed on
+   * the CPU; the light volumes and the extended model's diffusion are computed as for a whole
+   * volume (on the GPU where it can). With a controller of several processes, rendering a piece
+   * without UpdatePieceLighting is an error (nothing drawn); without a controller (or with one
    * process) the rest of the whole is empty space.
    *
    * Differences: the emission-absorption mapper needs neither (compositing is exact); the
-   * ambient-occlusion mapper occludes within its piece only; the extended scattering model's
-   * diffusion is solved per process on the whole light grid (exact) but on the CPU. Defaults: an
-   * empty whole extent (0, -1, 0, -1, 0, -1: the input is the whole) and no controller.
+   * ambient-occlusion mapper occludes within its piece only. Defaults: an empty whole extent
+   * (0, -1, 0, -1, 0, -1: the input is the whole) and no controller.
    */
   vtkSetVector6Macro(WholeExtent, int);
   vtkGetVector6Macro(WholeExtent, int);
@@ -219,10 +220,8 @@ public:
    * every process of the Controller before each render, whether or not the process's piece is
    * visible, culled or empty (ParaView's representation does, in its render request): one
    * AllReduce of two ints per call, and when a piece changed, the AllGather of the pieces'
-   * boxes and the AllReduce of the light grid. Once it was called, rendering never
-   * communicates, so a process whose volume is culled or has no piece cannot hold the others
-   * up. Without it, a render that must rebuild the averaged extinction communicates itself,
-   * which needs every process to render its piece in the same frames. Nothing happens without a
+   * boxes and the AllReduce of the light grid. Rendering never communicates, so a process whose
+   * volume is culled or has no piece cannot hold the others up. Nothing happens without a
    * controller of more than one process.
    */
   void UpdatePieceLighting(vtkVolume* volume);
@@ -365,7 +364,8 @@ private:
     bool interactive);
   /// Distributed rendering (vtkAVSVolumeMapperPieces.cxx): where the input lies in WholeExtent
   /// (Internals' Whole, PieceOffset, LitAsPiece), checked; and the averaged extinction of the
-  /// whole on `lightGrid` from the pieces' shares (collective).
+  /// whole on `lightGrid` for the render (the sum UpdatePieceLighting made; one process: its
+  /// share alone), without communicating.
   bool ResolvePiece(vtkImageData* input, std::string& error);
   bool AverageAcrossPieces(const avs::GridGeometry& lightGrid, std::string& error);
   /// sigma_t on the CPU (Internals' Extinction), rebuilt when the data or the opacity changed.

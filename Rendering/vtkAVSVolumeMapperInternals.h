@@ -116,7 +116,8 @@ struct vtkAVSVolumeMapper::Internals
   int AveragedSum = -1;
   std::vector<double> ShareKey;
   std::vector<int> SharedBoxes;
-  avs::Grid Share; ///< this piece's share of the averaged extinction (UpdatePieceLighting)
+  avs::Grid Share;    ///< this piece's share of the averaged extinction (UpdatePieceLighting)
+  avs::Grid WholeSum; ///< the pieces' shares summed (UpdatePieceLighting), on the light grid
 
   vtkNew<vtkMatrix4x4> WorldToIndex;
   vtkNew<vtkMatrix4x4> WorldToData;

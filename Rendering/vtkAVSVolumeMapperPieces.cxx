@@ -75,48 +75,23 @@ bool vtkAVSVolumeMapper::ResolvePiece(vtkImageData* input, std::string& error)
 bool vtkAVSVolumeMapper::AverageAcrossPieces(const avs::GridGeometry& lightGrid, std::string& error)
 {
   auto& in = *this->Internal;
-  const avs::GridGeometry& g = in.Scene.Scalars.Geometry;
   vtkMultiProcessController* controller = this->Controller;
-  const int processes = controller ? controller->GetNumberOfProcesses() : 1;
-  const avs::IndexBox mine = avs::PieceBox(in.PieceOffset, g.Dimensions);
-  // The pieces of lower rank keep the samples they share with this one.
-  std::vector<avs::IndexBox> earlier;
-  if (processes > 1)
+  if (controller && controller->GetNumberOfProcesses() > 1)
   {
-    std::vector<int> boxes(6 * static_cast<std::size_t>(processes));
-    if (!controller->AllGather(mine.data(), boxes.data(), 6))
+    // The sum UpdatePieceLighting made before the render: rendering never communicates (a
+    // collective here would wait for processes whose volume is culled or whose keys differ).
+    if (!in.PieceLightingUpdated || in.WholeSum.Values.size() != lightGrid.NumberOfPoints())
     {
-      error = "the pieces' extents could not be gathered over the controller";
+      error = "the whole's averaged extinction is not up to date: with a Controller of several "
+              "processes, UpdatePieceLighting must run on every process before each render";
       return false;
     }
-    const int rank = controller->GetLocalProcessId();
-    for (int r = 0; r < rank; ++r)
-    {
-      avs::IndexBox box;
-      std::copy(boxes.begin() + 6 * r, boxes.begin() + 6 * (r + 1), box.begin());
-      earlier.push_back(box);
-    }
+    in.Averaged = in.WholeSum;
+    return true;
   }
-  this->UpdateProgress(0.0);
-  avs::Grid share = avs::AverageExtinctionShare(
-    in.Extinction, in.PieceOffset, in.Whole, earlier, in.Parameters.AmbientRadius, lightGrid);
-  if (processes > 1)
-  {
-    in.Averaged = avs::Grid(lightGrid, 0.0f);
-    if (!controller->AllReduce(share.Values.data(),
-          in.Averaged.Values.data(),
-          static_cast<vtkIdType>(share.Values.size()),
-          vtkCommunicator::SUM_OP))
-    {
-      error = "the averaged extinction could not be summed over the controller";
-      return false;
-    }
-  }
-  else
-  {
-    in.Averaged = std::move(share);
-  }
-  this->UpdateProgress(1.0);
+  // One process: the rest of the whole is empty space.
+  in.Averaged = avs::AverageExtinctionShare(
+    in.Extinction, in.PieceOffset, in.Whole, {}, in.Parameters.AmbientRadius, lightGrid);
   return true;
 }
 
@@ -126,9 +101,10 @@ void vtkAVSVolumeMapper::UpdatePieceLighting(vtkVolume* volume)
   vtkMultiProcessController* controller = this->Controller;
   if (!controller || controller->GetNumberOfProcesses() < 2)
   {
+    in.PieceLightingUpdated = false;
     return;
   }
-  in.PieceLightingUpdated = true; // from now on rendering does not communicate
+  in.PieceLightingUpdated = true; // rendering does not communicate
   // This process's part: a piece of ambient scattering that converts; else nothing (no or an
   // empty input, another lighting model, an input that is the whole): a box of no samples and a
   // share of zeros. Every process takes part in the same calls either way.
@@ -137,7 +113,7 @@ void vtkAVSVolumeMapper::UpdatePieceLighting(vtkVolume* volume)
     producer->Update();
   }
   vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
-  const bool piece = this->GetEffect() == 2 && volume && input && input->GetNumberOfPoints() > 0 &&
+  bool piece = this->GetEffect() == 2 && volume && input && input->GetNumberOfPoints() > 0 &&
     this->PrepareScene(volume) && this->LitAsPiece;
   const avs::GridGeometry& g = in.Scene.Scalars.Geometry;
   avs::GridGeometry lightGrid;
@@ -160,13 +136,15 @@ void vtkAVSVolumeMapper::UpdatePieceLighting(vtkVolume* volume)
   }
   // Did any piece change, and how long is the light grid (the same on every process that has a
   // piece)?
-  const std::size_t points = piece ? lightGrid.NumberOfPoints() : 0;
+  std::size_t points = piece ? lightGrid.NumberOfPoints() : 0;
   if (points > static_cast<std::size_t>(VTK_INT_MAX))
   {
     vtkErrorMacro("The light grid of " << points << " points is too large to share.");
+    piece = false; // (every process with a piece finds the same)
+    points = 0;
+    key.clear();
   }
-  const int mine[2] = { key != in.ShareKey ? 1 : 0,
-    static_cast<int>(std::min<std::size_t>(points, VTK_INT_MAX)) };
+  const int mine[2] = { key != in.ShareKey ? 1 : 0, static_cast<int>(points) };
   int all[2] = { 0, 0 };
   controller->AllReduce(mine, all, 2, vtkCommunicator::MAX_OP);
   in.ShareKey = key;
@@ -218,15 +196,16 @@ void vtkAVSVolumeMapper::UpdatePieceLighting(vtkVolume* volume)
     controller->AllReduce(
       send.data(), sum.data(), static_cast<vtkIdType>(length), vtkCommunicator::SUM_OP);
   }
+  // A new sum (or none: rendering then reports it) rebuilds what depends on it.
+  ++in.SumVersion;
+  in.WholeSum = avs::Grid();
   if (piece && agree)
   {
-    in.Averaged = avs::Grid(lightGrid, 0.0f);
-    in.Averaged.Values = std::move(sum);
-    ++in.SumVersion;
+    in.WholeSum = avs::Grid(lightGrid, 0.0f);
+    in.WholeSum.Values = std::move(sum);
   }
   else if (piece)
   {
-    in.Averaged = avs::Grid(); // rendering reports it
-    in.ShareKey.clear();       // shared again at the next call
+    in.ShareKey.clear(); // shared again at the next call
   }
 }

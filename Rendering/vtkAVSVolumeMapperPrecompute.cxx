@@ -126,16 +126,9 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
   {
     if (this->LitAsPiece)
     {
-      // The pieces' shares summed (by UpdatePieceLighting before the render, else here:
-      // collective), then at this piece's voxels for the rays and, for the GPU light-volume
-      // pass, on the light grid.
-      if (in.PieceLightingUpdated && in.Averaged.Values.size() != lightGrid.NumberOfPoints())
-      {
-        vtkErrorMacro("Cannot render: the whole's averaged extinction is not up to date "
-                      "(UpdatePieceLighting must run on every process before each render)");
-        return false;
-      }
-      if ((!in.PieceLightingUpdated && !this->AverageAcrossPieces(lightGrid, error)) ||
+      // The pieces' shares summed (by UpdatePieceLighting, before the render), then at this
+      // piece's voxels for the rays and, for the GPU light-volume pass, on the light grid.
+      if (!this->AverageAcrossPieces(lightGrid, error) ||
         !in.RayCaster.UploadScalarsAveraged(in.Scene, avs::SampleAtPoints(in.Averaged, g), error) ||
         (gpuScattering && !in.RayCaster.UploadAveragedExtinction(in.Averaged, error)))
       {

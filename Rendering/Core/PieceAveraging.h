@@ -4,7 +4,8 @@
 // AverageExtinctionOn of the whole volume, because the box mean and the trilinear interpolation
 // are linear in sigma_t and every sample of the whole lattice belongs to exactly one piece.
 // Summed over the ranks (an all-reduce), the shares give every rank the global averaged
-// extinction without any rank holding more than its own piece at the data's resolution.
+// extinction without any rank holding more of the data's resolution than its own piece and a
+// margin of the averaging box's half width around it.
 #ifndef avs_PieceAveraging_h
 #define avs_PieceAveraging_h
 
