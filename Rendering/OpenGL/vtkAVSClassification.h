@@ -68,8 +68,13 @@ public:
     return { this->Mask.Get(), this->Validity.Get() };
   }
 
+  /// How the volume texture's components map back to data values: texel * scale + shift
+  /// (vtkAVSTextureUpload::TexelFormat; 1 and 0 for float texels), after Upload.
+  void SetValueMap(float scale, float shift);
   /// Binds the textures and sets the uniforms on the GL program `program` (current).
-  void Bind(unsigned int program);
+  /// `dataValues`: the program's volume texture holds data values (ambient scattering's float
+  /// texture), not the scalars' texels.
+  void Bind(unsigned int program, bool dataValues = false);
   void Unbind();
 
   const Layout& GetLayout() const { return this->Current; }
@@ -90,6 +95,8 @@ private:
   float Weight[4] = { 1, 1, 1, 1 };
   float GradientScale[3] = { 0.5f, 0.5f, 0.5f };
   float VoxelStep[3] = { 1, 1, 1 };
+  float ValueScale[4] = { 1, 1, 1, 1 }; // u_valueScale
+  float ValueShift[4] = { 0, 0, 0, 0 }; // u_valueShift
   float MaskBlend = 1.0f;
   float Labels = 0.0f;
 };

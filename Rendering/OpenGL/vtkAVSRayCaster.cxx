@@ -3,6 +3,7 @@
 #include "vtkAVSFrameUniforms.h"
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSShaderAssembly.h"
+#include "vtkAVSTextureMemory.h"
 
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -76,9 +77,11 @@ int vtkAVSRayCaster::MaximumTextureSize3D() const
 }
 
 // The uploads: vtkAVSVolumeTextures.
-bool vtkAVSRayCaster::UploadScalars(const avs::VolumeScene& scene, std::string& error)
+bool vtkAVSRayCaster::UploadScalars(const avs::VolumeScene& scene,
+  int scalarType,
+  std::string& error)
 {
-  return this->Textures.UploadScalars(scene, error);
+  return this->Textures.UploadScalars(scene, scalarType, error);
 }
 
 bool vtkAVSRayCaster::UploadClassification(const avs::VolumeScene& scene, std::string& error)
@@ -271,7 +274,9 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     tx.Scalars->Activate();
     program->SetUniformi("u_scalars", tx.Scalars->GetTextureUnit());
   }
-  tx.Classification.Bind(static_cast<unsigned int>(program->GetHandle()));
+  // Ambient scattering's two-channel texture holds data values, the scalars' own their texels.
+  tx.Classification.Bind(static_cast<unsigned int>(program->GetHandle()),
+    frame.Mode == avs::RenderMode::AmbientScattering && tx.AveragedChannel >= 0);
 
   if (frame.Mode == avs::RenderMode::AmbientOcclusion)
   {
@@ -399,6 +404,16 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
 vtkTextureObject* vtkAVSRayCaster::GetAveragedExtinctionTexture() const
 {
   return this->Textures.AveragedExtinction;
+}
+
+double vtkAVSRayCaster::VolumeTextureBytes() const
+{
+  double bytes = 0.0;
+  for (vtkTextureObject* t : this->Textures.VolumeTextures())
+  {
+    bytes += vtkAVSTextureMemory::Bytes(t);
+  }
+  return bytes;
 }
 
 vtkTextureObject* vtkAVSRayCaster::GetLightVolumeTexture(int t) const

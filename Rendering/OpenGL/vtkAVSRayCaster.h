@@ -71,9 +71,9 @@ public:
   int MaximumTextureSize3D() const;
 
   /// Texture uploads; return false and say why in `error` when the GPU refuses. The volume:
-  /// its components (and the validity of NaN data) in one texture
-  /// (vtkAVSClassification::PackScalars).
-  bool UploadScalars(const avs::VolumeScene& scene, std::string& error);
+  /// its components (and the validity of NaN data) in one texture, in the texel format of the
+  /// array's VTK type `scalarType` (vtkAVSTextureUpload).
+  bool UploadScalars(const avs::VolumeScene& scene, int scalarType, std::string& error);
   /// The classification's tables, mask and uniforms (vtkAVSClassification), after the scalars.
   bool UploadClassification(const avs::VolumeScene& scene, std::string& error);
   /// The CPU's ambient-scattering volumes as the ray caster fetches them: the volume's
@@ -127,6 +127,9 @@ public:
   /// on the light grid (null where absent).
   vtkTextureObject* GetAveragedExtinctionTexture() const;
   vtkTextureObject* GetLightVolumeTexture(int t) const;
+  /// Bytes of the volume's 3D textures (vtkAVSVolumeTextures::VolumeTextures), as the GPU
+  /// memory budget counts them.
+  double VolumeTextureBytes() const;
 
   struct Frame
   {

@@ -2,10 +2,12 @@
 
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSTextureMemory.h"
+#include "vtkAVSTextureUpload.h"
 
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <cmath>
 
 void vtkAVSVolumeTextures::SetWindow(vtkOpenGLRenderWindow* window)
 {
@@ -110,78 +112,99 @@ bool vtkAVSVolumeTextures::UploadGrid(vtkSmartPointer<vtkTextureObject>& texture
   std::string& error,
   unsigned int internalFormat)
 {
-  const int limit = this->MaximumTextureSize3D();
-  if (d[0] > limit || d[1] > limit || d[2] > limit)
-  {
-    error = "the volume (" + std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " +
-      std::to_string(d[2]) +
-      ") is too large for the GPU (largest 3D texture: " + std::to_string(limit) + " per axis)";
-    return false;
-  }
-  // The budget of AVS_GPU_MEMORY_LIMIT_MB (vtkAVSTextureMemory.h), before anything is allocated.
-  if (!vtkAVSTextureMemory::Admit(
-        this->VolumeTextures(), texture, d, components, internalFormat, error))
-  {
-    return false;
-  }
-  if (texture && !data && !internalFormat &&
-    texture->GetWidth() == static_cast<unsigned int>(d[0]) &&
-    texture->GetHeight() == static_cast<unsigned int>(d[1]) &&
-    texture->GetDepth() == static_cast<unsigned int>(d[2]) &&
-    texture->GetComponents() == components)
-  {
-    return true; // to be written on the GPU: the storage is reused
-  }
-  if (texture)
-  {
-    texture->ReleaseGraphicsResources(this->Window);
-  }
-  texture = vtkSmartPointer<vtkTextureObject>::New();
-  texture->SetContext(this->Window);
-  ConfigureSampling(texture);
-  if (internalFormat)
-  {
-    texture->SetInternalFormat(internalFormat);
-  }
-  vtkAVSRenderPasses::DiscardErrors(); // the check below is of this upload alone
-  // Rows of floats are not padded.
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  if (!texture->Create3DFromRaw(static_cast<unsigned int>(d[0]),
-        static_cast<unsigned int>(d[1]),
-        static_cast<unsigned int>(d[2]),
-        components,
-        VTK_FLOAT,
-        const_cast<float*>(data)))
-  {
-    error = "the GPU could not allocate a " + std::to_string(d[0]) + " x " + std::to_string(d[1]) +
-      " x " + std::to_string(d[2]) + " texture (out of GPU memory?)";
-    texture = nullptr;
-    return false;
-  }
-  if (glGetError() != GL_NO_ERROR)
-  {
-    error = "the GPU refused a 3D texture of " + std::to_string(d[0]) + " x " +
-      std::to_string(d[1]) + " x " + std::to_string(d[2]) + " (out of GPU memory?)";
-    texture->ReleaseGraphicsResources(this->Window);
-    texture = nullptr;
-    return false;
-  }
-  return true;
+  return vtkAVSTextureUpload::UploadFloats(
+    this->Window, texture, d, components, data, internalFormat, this->VolumeTextures(), error);
 }
 
-bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene, std::string& error)
+namespace
+{
+// Writes the slices [z0, z1) of the scene's channels (the components, then the validity where
+// the layout puts it beside them) into `texels` as T, each value v stored as
+// round(format.Encode(v)) for normalized texels and as v for floats.
+template<typename T>
+void PackSlab(const avs::VolumeScene& scene,
+  const vtkAVSClassification::Layout& layout,
+  const vtkAVSTextureUpload::TexelFormat& format,
+  int z0,
+  int z1,
+  T* texels)
+{
+  const std::size_t slice = static_cast<std::size_t>(scene.Scalars.Geometry.Dimensions[0]) *
+    scene.Scalars.Geometry.Dimensions[1];
+  const std::size_t begin = slice * z0, end = slice * z1;
+  const int channels = layout.ScalarChannels();
+  for (int c = 0; c < channels; ++c)
+  {
+    const std::vector<float>& v = c == layout.Components ? scene.Medium.Validity.Values
+      : c == 0                                           ? scene.Scalars.Values
+               : scene.Medium.Components[c - 1].Values.Values;
+    T* out = texels + c;
+    if (format.IsNormalized())
+    {
+      const double top = static_cast<double>(format.Scale);
+      for (std::size_t i = begin; i < end; ++i, out += channels)
+      {
+        *out = static_cast<T>(std::lround(std::clamp(format.Encode(v[i]), 0.0, top)));
+      }
+    }
+    else
+    {
+      for (std::size_t i = begin; i < end; ++i, out += channels)
+      {
+        *out = static_cast<T>(v[i]);
+      }
+    }
+  }
+}
+} // namespace
+
+bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
+  int scalarType,
+  std::string& error)
 {
   const vtkAVSClassification::Layout layout = vtkAVSClassification::LayoutOf(scene);
-  const std::vector<float> packed = vtkAVSClassification::PackScalars(scene, layout);
-  if (!this->UploadGrid(this->Scalars,
+  const int channels = layout.ScalarChannels();
+  // NaN voxels: the validity goes with the components (or the components are multiplied by
+  // it), so those volumes stay floats whatever their type.
+  const vtkAVSTextureUpload::TexelFormat format =
+    vtkAVSTextureUpload::TexelFormat::ForScalars(scalarType, channels, layout.Validity != 0);
+  const std::size_t slice = static_cast<std::size_t>(scene.Scalars.Geometry.Dimensions[0]) *
+    scene.Scalars.Geometry.Dimensions[1];
+  const vtkAVSTextureUpload::SlabFill fill = [&scene, &layout, &format, channels, slice](
+                                               int z0, int z1, void* texels) -> const void*
+  {
+    if (!format.IsNormalized() && channels == 1)
+    {
+      return scene.Scalars.Values.data() + slice * z0; // the grid itself
+    }
+    if (format.HostType == VTK_UNSIGNED_CHAR)
+    {
+      PackSlab(scene, layout, format, z0, z1, static_cast<unsigned char*>(texels));
+    }
+    else if (format.HostType == VTK_UNSIGNED_SHORT)
+    {
+      PackSlab(scene, layout, format, z0, z1, static_cast<unsigned short*>(texels));
+    }
+    else
+    {
+      PackSlab(scene, layout, format, z0, z1, static_cast<float*>(texels));
+    }
+    return texels;
+  };
+  if (!vtkAVSTextureUpload::Upload(this->Window,
+        this->Scalars,
         scene.Scalars.Geometry.Dimensions,
-        layout.ScalarChannels(),
-        packed.data(),
+        channels,
+        format,
+        fill,
+        this->VolumeTextures(),
         error))
   {
     return false;
   }
   this->ScalarLayout = layout;
+  this->ScalarFormat = format;
+  this->Classification.SetValueMap(format.Scale, format.Shift);
   return true;
 }
 
@@ -190,7 +213,12 @@ bool vtkAVSVolumeTextures::UploadClassification(const avs::VolumeScene& scene, s
   this->Classification.SetWindow(this->Window);
   std::vector<vtkTextureObject*> held = this->VolumeTextures();
   held.resize(held.size() - this->Classification.VolumeTextures().size()); // counted by it
-  return this->Classification.Upload(scene, held, error);
+  if (!this->Classification.Upload(scene, held, error))
+  {
+    return false;
+  }
+  this->Classification.SetValueMap(this->ScalarFormat.Scale, this->ScalarFormat.Shift);
+  return true;
 }
 
 std::vector<vtkTextureObject*> vtkAVSVolumeTextures::VolumeTextures() const

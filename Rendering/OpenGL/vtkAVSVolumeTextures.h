@@ -19,6 +19,7 @@
 #include "ReferenceRenderer.h"
 #include "ScatteringTable.h"
 #include "vtkAVSClassification.h"
+#include "vtkAVSTextureUpload.h"
 
 #include "vtkOpenGLRenderWindow.h" // for vtkWeakPointer<vtkOpenGLRenderWindow>
 #include "vtkSmartPointer.h"
@@ -59,7 +60,8 @@ public:
 
   /// A 3D float texture of `components` channels (data may be null: allocated, undefined, and
   /// storage of the same size reused), in the GL internal format `internalFormat` (0: 32-bit
-  /// floats). Returns false and says why in `error` when the GPU refuses.
+  /// floats), through vtkAVSTextureUpload with this volume's textures as the budget's.
+  /// Returns false and says why in `error` when the GPU refuses.
   bool UploadGrid(vtkSmartPointer<vtkTextureObject>& texture,
     const std::array<int, 3>& dimensions,
     int components,
@@ -71,7 +73,9 @@ public:
   bool EnsureLightTextures(const std::array<int, 3>& dimensions, int count, std::string& error);
 
   /// The uploads of vtkAVSRayCaster (documented there).
-  bool UploadScalars(const avs::VolumeScene& scene, std::string& error);
+  /// The scalars in the texel format of their VTK type `scalarType`
+  /// (vtkAVSTextureUpload::TexelFormat::ForScalars), converted slab by slab.
+  bool UploadScalars(const avs::VolumeScene& scene, int scalarType, std::string& error);
   bool UploadClassification(const avs::VolumeScene& scene, std::string& error);
   bool UploadScalarsAveraged(const avs::VolumeScene& scene,
     const avs::Grid& averagedAtVoxels,
@@ -96,8 +100,10 @@ public:
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   vtkSmartPointer<vtkTextureObject> Scalars, Occlusion, Table;
   vtkAVSClassification Classification;
-  /// The layout the scalars were uploaded with (vtkAVSClassification::Layout).
+  /// The layout the scalars were uploaded with (vtkAVSClassification::Layout), and their texel
+  /// format (its Scale and Shift map the texels back to data values in the shaders).
   vtkAVSClassification::Layout ScalarLayout;
+  vtkAVSTextureUpload::TexelFormat ScalarFormat;
   /// Data grid, for ambient scattering: the volume's channels and then the averaged sigma_t at
   /// the voxel (AveragedChannel) or, when they do not fit into four channels, the averaged
   /// sigma_t alone (AveragedChannel -1).

@@ -70,7 +70,7 @@ void main()
 #ifdef AVS_AVERAGED_TEXTURE
       imageStore(u_final, v, vec4(averaged));
 #else
-      vec4 texel = texelFetch(u_scalars, v, 0);
+      vec4 texel = DataValues(texelFetch(u_scalars, v, 0)); // the ray caster reads data values
       texel[AVS_AVERAGED_CHANNEL] = averaged;
       imageStore(u_final, v, texel);
 #endif
