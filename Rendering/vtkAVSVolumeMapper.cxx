@@ -573,9 +573,15 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfRenderedFrames: " << this->NumberOfRenderedFrames << "\n";
   os << indent << "NumberOfInteractiveFrames: " << this->NumberOfInteractiveFrames << "\n";
   os << indent << "GPUMemoryBytes: " << this->GetGPUMemoryBytes() << "\n";
+  os << indent << "GPUMemoryPeakBytes: " << this->GetGPUMemoryPeakBytes() << "\n";
 }
 
 double vtkAVSVolumeMapper::GetGPUMemoryBytes() const
 {
   return this->Internal->RayCaster.VolumeTextureBytes();
+}
+
+double vtkAVSVolumeMapper::GetGPUMemoryPeakBytes() const
+{
+  return this->Internal->RayCaster.PeakVolumeTextureBytes();
 }

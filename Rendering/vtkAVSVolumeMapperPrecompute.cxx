@@ -130,8 +130,7 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
     else
     {
       in.Averaged = avs::AverageExtinctionOn(in.Extinction, rp.AmbientRadius, lightGrid);
-      if (!in.RayCaster.UploadScalarsAveraged(
-            in.Scene, avs::ResampleTrilinear(in.Averaged, g), error))
+      if (!in.RayCaster.UploadAveraged(in.Averaged, error))
       {
         vtkErrorMacro("Cannot render: " << error);
         return false;

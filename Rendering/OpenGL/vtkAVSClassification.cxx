@@ -71,32 +71,6 @@ vtkAVSClassification::Layout vtkAVSClassification::LayoutOf(const avs::VolumeSce
   return l;
 }
 
-std::vector<float> vtkAVSClassification::PackScalars(const avs::VolumeScene& scene,
-  const Layout& layout)
-{
-  const std::size_t n = scene.Scalars.Values.size();
-  const int channels = layout.ScalarChannels();
-  std::vector<float> packed(channels * n);
-  for (int c = 0; c < layout.Components; ++c)
-  {
-    const std::vector<float>& v =
-      c == 0 ? scene.Scalars.Values : scene.Medium.Components[c - 1].Values.Values;
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      packed[channels * i + c] = v[i];
-    }
-  }
-  if (layout.Validity == 1)
-  {
-    const std::vector<float>& v = scene.Medium.Validity.Values;
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      packed[channels * i + layout.Components] = v[i];
-    }
-  }
-  return packed;
-}
-
 void vtkAVSClassification::ReleaseTransfer()
 {
   if (this->Transfer && this->Window)
@@ -287,7 +261,7 @@ bool vtkAVSClassification::Upload(const avs::VolumeScene& scene,
   return true;
 }
 
-void vtkAVSClassification::Bind(unsigned int program, bool dataValues)
+void vtkAVSClassification::Bind(unsigned int program)
 {
   auto location = [program](const char* name)
   { return glGetUniformLocation(static_cast<GLuint>(program), name); };
@@ -301,9 +275,8 @@ void vtkAVSClassification::Bind(unsigned int program, bool dataValues)
   glUniform1fv(location("u_weight"), 4, this->Weight);
   glUniform3fv(location("u_gradientScale"), 1, this->GradientScale);
   glUniform3fv(location("u_voxelStep"), 1, this->VoxelStep);
-  const float one[4] = { 1, 1, 1, 1 }, zero[4] = { 0, 0, 0, 0 };
-  glUniform4fv(location("u_valueScale"), 1, dataValues ? one : this->ValueScale);
-  glUniform4fv(location("u_valueShift"), 1, dataValues ? zero : this->ValueShift);
+  glUniform4fv(location("u_valueScale"), 1, this->ValueScale);
+  glUniform4fv(location("u_valueShift"), 1, this->ValueShift);
   if (this->Mask)
   {
     this->Mask->Activate();

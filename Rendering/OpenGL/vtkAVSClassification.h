@@ -47,10 +47,6 @@ public:
   };
   static Layout LayoutOf(const avs::VolumeScene& scene);
 
-  /// The volume texture's texels: the components times the validity, then the validity when it
-  /// goes with them (Layout::ScalarChannels channels per voxel).
-  static std::vector<float> PackScalars(const avs::VolumeScene& scene, const Layout& layout);
-
   void SetWindow(vtkOpenGLRenderWindow* window) { this->Window = window; }
   void ReleaseGraphicsResources(vtkWindow* window);
 
@@ -72,9 +68,7 @@ public:
   /// (vtkAVSTextureUpload::TexelFormat; 1 and 0 for float texels), after Upload.
   void SetValueMap(float scale, float shift);
   /// Binds the textures and sets the uniforms on the GL program `program` (current).
-  /// `dataValues`: the program's volume texture holds data values (ambient scattering's float
-  /// texture), not the scalars' texels.
-  void Bind(unsigned int program, bool dataValues = false);
+  void Bind(unsigned int program);
   void Unbind();
 
   const Layout& GetLayout() const { return this->Current; }

@@ -3,7 +3,6 @@
 #include "vtkAVSFrameUniforms.h"
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSShaderAssembly.h"
-#include "vtkAVSTextureMemory.h"
 
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -89,11 +88,9 @@ bool vtkAVSRayCaster::UploadClassification(const avs::VolumeScene& scene, std::s
   return this->Textures.UploadClassification(scene, error);
 }
 
-bool vtkAVSRayCaster::UploadScalarsAveraged(const avs::VolumeScene& scene,
-  const avs::Grid& averagedAtVoxels,
-  std::string& error)
+bool vtkAVSRayCaster::UploadAveraged(const avs::Grid& averaged, std::string& error)
 {
-  return this->Textures.UploadScalarsAveraged(scene, averagedAtVoxels, error);
+  return this->Textures.UploadAveraged(averaged, error);
 }
 
 bool vtkAVSRayCaster::UploadLightVolumes(const std::vector<avs::Grid>& lights, std::string& error)
@@ -230,12 +227,8 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   }
   const bool blend = frame.Mode == avs::RenderMode::EmissionAbsorption;
   if (!this->EnsureProgram(frame.Mode,
-        vtkAVSShaderAssembly::RayCastDefines(frame.Mode,
-          frame.Parameters,
-          frame.Lights,
-          static_cast<int>(tx.TableSize[1]),
-          layout,
-          tx.AveragedChannel) +
+        vtkAVSShaderAssembly::RayCastDefines(
+          frame.Mode, frame.Parameters, frame.Lights, static_cast<int>(tx.TableSize[1]), layout) +
           vtkAVSShaderOptions::ClipDefines(frame.Clip) +
           (blend ? vtkAVSShaderOptions::BlendDefines(frame.Blend) : std::string())))
   {
@@ -268,15 +261,9 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   program->SetUniformi("u_depth", depth->GetTextureUnit());
   // The volume and its classification (avs_classify.glsl), with the interpolation type's filter.
   vtkAVSVolumeTextures::SetVolumeFilter(tx.Scalars, layout.Nearest);
-  vtkAVSVolumeTextures::SetVolumeFilter(tx.ScalarsAveraged, layout.Nearest);
-  if (frame.Mode != avs::RenderMode::AmbientScattering || tx.AveragedChannel < 0)
-  {
-    tx.Scalars->Activate();
-    program->SetUniformi("u_scalars", tx.Scalars->GetTextureUnit());
-  }
-  // Ambient scattering's two-channel texture holds data values, the scalars' own their texels.
-  tx.Classification.Bind(static_cast<unsigned int>(program->GetHandle()),
-    frame.Mode == avs::RenderMode::AmbientScattering && tx.AveragedChannel >= 0);
+  tx.Scalars->Activate();
+  program->SetUniformi("u_scalars", tx.Scalars->GetTextureUnit());
+  tx.Classification.Bind(static_cast<unsigned int>(program->GetHandle()));
 
   if (frame.Mode == avs::RenderMode::AmbientOcclusion)
   {
@@ -303,7 +290,14 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     const int n =
       static_cast<int>(std::min<std::size_t>(frame.Lights.size(), MaximumNumberOfLights));
     const int textures = vtkAVSVolumeTextures::LightTexturesFor(n);
-    if (!tx.Table || !tx.ScalarsAveraged ||
+    auto dimensionsOf = [](vtkTextureObject* t) -> std::array<int, 3>
+    {
+      return { static_cast<int>(t->GetWidth()),
+        static_cast<int>(t->GetHeight()),
+        static_cast<int>(t->GetDepth()) };
+    };
+    if (!tx.Table || !tx.AveragedExtinction ||
+      dimensionsOf(tx.AveragedExtinction) != frame.LightVolumeDimensions ||
       (textures > 0 && frame.LightVolumeDimensions != tx.LightTextureDimensions) ||
       !std::all_of(tx.LightVolumes,
         tx.LightVolumes + textures,
@@ -312,9 +306,8 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
       error = "the scattering volumes are not uploaded";
       return false;
     }
-    tx.ScalarsAveraged->Activate();
-    program->SetUniformi(tx.AveragedChannel >= 0 ? "u_scalarsAveraged" : "u_averagedAtVoxels",
-      tx.ScalarsAveraged->GetTextureUnit());
+    tx.AveragedExtinction->Activate();
+    program->SetUniformi("u_averagedExtinction", tx.AveragedExtinction->GetTextureUnit());
     const char* names[vtkAVSVolumeTextures::NumberOfLightTextures] = { "u_lightVolumes0",
       "u_lightVolumes1" };
     for (int t = 0; t < textures; ++t)
@@ -382,7 +375,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   for (vtkTextureObject* t : { this->Depth.GetTexture(),
          tx.Scalars.Get(),
          tx.Occlusion.Get(),
-         tx.ScalarsAveraged.Get(),
+         tx.AveragedExtinction.Get(),
          tx.LightVolumes[0].Get(),
          tx.LightVolumes[1].Get(),
          tx.Table.Get() })
@@ -408,12 +401,12 @@ vtkTextureObject* vtkAVSRayCaster::GetAveragedExtinctionTexture() const
 
 double vtkAVSRayCaster::VolumeTextureBytes() const
 {
-  double bytes = 0.0;
-  for (vtkTextureObject* t : this->Textures.VolumeTextures())
-  {
-    bytes += vtkAVSTextureMemory::Bytes(t);
-  }
-  return bytes;
+  return this->Textures.HeldBytes();
+}
+
+double vtkAVSRayCaster::PeakVolumeTextureBytes() const
+{
+  return this->Textures.GetPeakBytes();
 }
 
 vtkTextureObject* vtkAVSRayCaster::GetLightVolumeTexture(int t) const

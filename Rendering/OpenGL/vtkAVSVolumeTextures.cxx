@@ -19,7 +19,6 @@ void vtkAVSVolumeTextures::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Classification.ReleaseGraphicsResources(window);
   for (vtkTextureObject* t : { this->Scalars.Get(),
-         this->ScalarsAveraged.Get(),
          this->AveragedExtinction.Get(),
          this->Occlusion.Get(),
          this->Table.Get(),
@@ -34,8 +33,7 @@ void vtkAVSVolumeTextures::ReleaseGraphicsResources(vtkWindow* window)
       t->ReleaseGraphicsResources(window);
     }
   }
-  this->Scalars = this->ScalarsAveraged = this->AveragedExtinction = this->Occlusion = this->Table =
-    nullptr;
+  this->Scalars = this->AveragedExtinction = this->Occlusion = this->Table = nullptr;
   for (auto& t : this->LightVolumes)
   {
     t = nullptr;
@@ -45,6 +43,7 @@ void vtkAVSVolumeTextures::ReleaseGraphicsResources(vtkWindow* window)
     t = nullptr;
   }
   this->LightTextureDimensions = { 0, 0, 0 };
+  this->PeakBytes = 0.0;
   this->SoftwareRenderer = -1; // asked again in the next context
   if (window == this->Window)
   {
@@ -112,8 +111,40 @@ bool vtkAVSVolumeTextures::UploadGrid(vtkSmartPointer<vtkTextureObject>& texture
   std::string& error,
   unsigned int internalFormat)
 {
-  return vtkAVSTextureUpload::UploadFloats(
-    this->Window, texture, d, components, data, internalFormat, this->VolumeTextures(), error);
+  if (!vtkAVSTextureUpload::UploadFloats(
+        this->Window, texture, d, components, data, internalFormat, this->VolumeTextures(), error))
+  {
+    return false;
+  }
+  this->NotePeak();
+  return true;
+}
+
+double vtkAVSVolumeTextures::HeldBytes() const
+{
+  double bytes = 0.0;
+  for (vtkTextureObject* t : this->VolumeTextures())
+  {
+    bytes += vtkAVSTextureMemory::Bytes(t);
+  }
+  return bytes;
+}
+
+void vtkAVSVolumeTextures::NotePeak()
+{
+  this->PeakBytes = std::max(this->PeakBytes, this->HeldBytes());
+}
+
+void vtkAVSVolumeTextures::ReleaseScratch()
+{
+  for (auto& t : this->Scratch)
+  {
+    if (t)
+    {
+      t->ReleaseGraphicsResources(this->Window);
+    }
+    t = nullptr;
+  }
 }
 
 namespace
@@ -202,6 +233,7 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
   {
     return false;
   }
+  this->NotePeak();
   this->ScalarLayout = layout;
   this->ScalarFormat = format;
   this->Classification.SetValueMap(format.Scale, format.Shift);
@@ -224,7 +256,6 @@ bool vtkAVSVolumeTextures::UploadClassification(const avs::VolumeScene& scene, s
 std::vector<vtkTextureObject*> vtkAVSVolumeTextures::VolumeTextures() const
 {
   std::vector<vtkTextureObject*> held = { this->Scalars,
-    this->ScalarsAveraged,
     this->AveragedExtinction,
     this->Occlusion,
     this->LightVolumes[0],
@@ -237,18 +268,6 @@ std::vector<vtkTextureObject*> vtkAVSVolumeTextures::VolumeTextures() const
     held.push_back(t); // last: UploadClassification leaves them to the classification
   }
   return held;
-}
-
-int vtkAVSVolumeTextures::AveragedChannelFor(const vtkAVSClassification::Layout& layout)
-{
-  const int k = layout.ScalarChannels();
-  return k < 4 ? k : -1;
-}
-
-int vtkAVSVolumeTextures::AveragedComponentsFor(const vtkAVSClassification::Layout& layout)
-{
-  const int channel = AveragedChannelFor(layout);
-  return channel < 0 ? 1 : (channel + 1 == 2 ? 2 : 4); // image formats: r32f, rg32f, rgba32f
 }
 
 bool vtkAVSVolumeTextures::UploadOcclusion(const avs::Grid& occlusion, std::string& error)
@@ -291,37 +310,10 @@ bool vtkAVSVolumeTextures::EnsureLightTextures(const std::array<int, 3>& dimensi
   return true;
 }
 
-bool vtkAVSVolumeTextures::UploadScalarsAveraged(const avs::VolumeScene& scene,
-  const avs::Grid& averagedAtVoxels,
-  std::string& error)
+bool vtkAVSVolumeTextures::UploadAveraged(const avs::Grid& averaged, std::string& error)
 {
-  const std::size_t voxels = scene.Scalars.Values.size();
-  if (averagedAtVoxels.Values.size() != voxels)
-  {
-    error = "the averaged extinction is not on the data's grid";
-    return false;
-  }
-  const vtkAVSClassification::Layout layout = vtkAVSClassification::LayoutOf(scene);
-  const int channel = AveragedChannelFor(layout);
-  const int components = AveragedComponentsFor(layout);
-  std::vector<float> packed(components * voxels, 0.0f);
-  if (channel >= 0)
-  {
-    const int k = layout.ScalarChannels();
-    const std::vector<float> scalars = vtkAVSClassification::PackScalars(scene, layout);
-    for (std::size_t i = 0; i < voxels; ++i)
-    {
-      std::copy(&scalars[k * i], &scalars[k * i] + k, &packed[components * i]);
-      packed[components * i + channel] = averagedAtVoxels.Values[i];
-    }
-  }
-  else
-  {
-    packed = averagedAtVoxels.Values;
-  }
-  this->AveragedChannel = channel;
   return this->UploadGrid(
-    this->ScalarsAveraged, scene.Scalars.Geometry.Dimensions, components, packed.data(), error);
+    this->AveragedExtinction, averaged.Geometry.Dimensions, 1, averaged.Values.data(), error);
 }
 
 bool vtkAVSVolumeTextures::UploadLightVolumes(const std::vector<avs::Grid>& lights,
