@@ -305,7 +305,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   // Uploads of what changed.
   if (!in.ScalarsUploaded)
   {
-    if (!in.RayCaster.UploadScalars(in.Scene, error))
+    if (!in.RayCaster.UploadScalars(in.Scene, in.ScalarType, error))
     {
       vtkErrorMacro("Cannot render: " << error);
       return false;
@@ -609,4 +609,16 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfDiffusionRebuilds: " << this->NumberOfDiffusionRebuilds << "\n";
   os << indent << "NumberOfRenderedFrames: " << this->NumberOfRenderedFrames << "\n";
   os << indent << "NumberOfInteractiveFrames: " << this->NumberOfInteractiveFrames << "\n";
+  os << indent << "GPUMemoryBytes: " << this->GetGPUMemoryBytes() << "\n";
+  os << indent << "GPUMemoryPeakBytes: " << this->GetGPUMemoryPeakBytes() << "\n";
+}
+
+double vtkAVSVolumeMapper::GetGPUMemoryBytes() const
+{
+  return this->Internal->RayCaster.VolumeTextureBytes();
+}
+
+double vtkAVSVolumeMapper::GetGPUMemoryPeakBytes() const
+{
+  return this->Internal->RayCaster.PeakVolumeTextureBytes();
 }

@@ -285,6 +285,18 @@ public:
   ///@}
 
   /**
+   * Bytes of the 3D textures the mapper holds on the GPU for its volume (the scalars in their
+   * texel format, the precomputed volumes, the precomputation's scratch grids, the mask and the
+   * validity), as the GPU memory budget (environment variable AVS_GPU_MEMORY_LIMIT_MB) counts
+   * them: 0 before the first frame and after ReleaseGraphicsResources. The 1D and 2D tables and
+   * the extended model's fluence are not counted. GetGPUMemoryPeakBytes: the most they took at
+   * once since the last release (the precomputation allocates its intermediate grids and
+   * releases them after it).
+   */
+  double GetGPUMemoryBytes() const;
+  double GetGPUMemoryPeakBytes() const;
+
+  /**
    * Renders the volume (called by vtkVolume).
    */
   void Render(vtkRenderer* renderer, vtkVolume* volume) override;

@@ -126,11 +126,10 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
   {
     if (this->LitAsPiece)
     {
-      // The pieces' shares summed (by UpdatePieceLighting, before the render), then at this
-      // piece's voxels for the rays and, for the GPU light-volume pass, on the light grid.
+      // The pieces' shares summed (by UpdatePieceLighting, before the render), on the light
+      // grid that the rays and the light-volume pass read.
       if (!this->AverageAcrossPieces(lightGrid, error) ||
-        !in.RayCaster.UploadScalarsAveraged(in.Scene, avs::SampleAtPoints(in.Averaged, g), error) ||
-        (gpuScattering && !in.RayCaster.UploadAveragedExtinction(in.Averaged, error)))
+        !in.RayCaster.UploadAveraged(in.Averaged, error))
       {
         vtkErrorMacro("Cannot render: " << error);
         return false;
@@ -151,8 +150,7 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
     else
     {
       in.Averaged = avs::AverageExtinctionOn(in.Extinction, rp.AmbientRadius, lightGrid);
-      if (!in.RayCaster.UploadScalarsAveraged(
-            in.Scene, avs::ResampleTrilinear(in.Averaged, g), error))
+      if (!in.RayCaster.UploadAveraged(in.Averaged, error))
       {
         vtkErrorMacro("Cannot render: " << error);
         return false;

@@ -54,19 +54,6 @@ inline double SampleLocalClamped(const Grid& g, const Vec3& local)
   const Vec3& s = g.Geometry.Spacing;
   return g.SampleClamped({ local.x / s.x, local.y / s.y, local.z / s.z });
 }
-// The same at the nearest lattice point.
-inline double NearestLocalClamped(const Grid& g, const Vec3& local)
-{
-  const Vec3& s = g.Geometry.Spacing;
-  const auto& n = g.Geometry.Dimensions;
-  int i[3];
-  for (int a = 0; a < 3; ++a)
-  {
-    const double c = std::clamp(local[a] / s[a], 0.0, static_cast<double>(n[a] - 1));
-    i[a] = std::min(static_cast<int>(std::floor(c + 0.5)), n[a] - 1);
-  }
-  return g.At(i[0], i[1], i[2]);
-}
 } // namespace
 
 std::vector<Grid> ComputeDiffuse(const Grid& averaged,
@@ -141,7 +128,6 @@ bool Precompute(const VolumeScene& scene,
     // The averaged extinction lives on the light volumes' grid, as in the GPU mappers.
     const GridGeometry lightGeometry = geometry.Capped(p.LightVolumeMaximumDimension);
     out.Averaged = AverageExtinctionOn(out.Extinction, p.AmbientRadius, lightGeometry);
-    out.AveragedAtVoxels = ResampleTrilinear(out.Averaged, geometry);
     report(0.2);
     const std::size_t n = scene.Lights.size();
     for (std::size_t j = 0; j < n; ++j)
@@ -225,7 +211,6 @@ void CastRay(const VolumeScene& scene,
       sigmaT = 0.0; // clipped or cropped away
     }
   };
-  const bool nearest = scene.Medium.Sampling == Interpolation::Nearest;
   // Ambient in-scattering from the ball around the sample x (eqs. 8.8-8.9), per unit of the
   // transmittance and of the ray's length.
   auto inscattered = [&](const Vec3& x)
@@ -237,10 +222,9 @@ void CastRay(const VolumeScene& scene,
     {
       return Vec3{ 0, 0, 0 };
     }
-    // The GPU keeps it beside the scalars in one texture, read with the interpolation type.
-    const double tau = p.AmbientRadius *
-      (nearest ? NearestLocalClamped(v.AveragedAtVoxels, x)
-               : SampleLocalClamped(v.AveragedAtVoxels, x));
+    // On the light grid, read trilinearly there as the light volumes are (the GPU reads it
+    // with their texture coordinate).
+    const double tau = p.AmbientRadius * SampleLocalClamped(v.Averaged, x);
     const Vec3 world = geometry.LocalToWorld(x);
     Vec3 inscatter{ 0, 0, 0 };
     for (std::size_t j = 0; j < scene.Lights.size(); ++j)

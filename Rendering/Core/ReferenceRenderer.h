@@ -61,8 +61,8 @@ struct Image
 struct PrecomputedVolumes
 {
   Grid Extinction;                ///< sigma_t at the voxels
-  Grid Averaged;                  ///< averaged sigma_t (section 3) on the light volumes' grid
-  Grid AveragedAtVoxels;          ///< Averaged interpolated at the voxels, as the rays read it
+  Grid Averaged;                  ///< averaged sigma_t (section 3) on the light volumes' grid,
+                                  ///< where tube marching and the rays read it
   std::vector<Grid> LightVolumes; ///< one per light (section 5)
   Grid Occlusion;                 ///< AO (section 7)
   std::vector<Grid> Diffuse;      ///< extended model: RGB fluence phi (DiffuseFluence.h)

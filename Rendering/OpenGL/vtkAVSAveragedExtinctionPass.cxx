@@ -10,25 +10,9 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
-namespace
-{
-// How pass 4 packs its result: the averaged extinction's channel beside the volume's (or
-// alone), and the image format of ScalarsAveraged.
-std::string PackingDefines(const vtkAVSClassification::Layout& layout)
-{
-  const int channel = vtkAVSVolumeTextures::AveragedChannelFor(layout);
-  const int components = vtkAVSVolumeTextures::AveragedComponentsFor(layout);
-  return layout.Defines() +
-    (channel >= 0 ? "#define AVS_AVERAGED_CHANNEL " + std::to_string(channel) + "\n"
-                  : std::string("#define AVS_AVERAGED_TEXTURE\n")) +
-    "#define AVS_FINAL_FORMAT " +
-    (components == 1 ? "r32f" : (components == 2 ? "rg32f" : "rgba32f")) + "\n";
-}
-} // namespace
-
 unsigned int vtkAVSAveragedExtinctionPass::Build(const vtkAVSClassification::Layout& layout)
 {
-  const std::string defines = PackingDefines(layout);
+  const std::string defines = layout.Defines();
   if (this->Program && this->Defines == defines)
   {
     return this->Program;
@@ -57,19 +41,16 @@ bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
   const avs::ClipRegion& clip,
   std::string& error)
 {
-  // The program for this classification, and how pass 4 packs its result.
+  // The program for this classification.
   const vtkAVSClassification::Layout& layout = textures.Classification.GetLayout();
-  const int channel = vtkAVSVolumeTextures::AveragedChannelFor(layout);
-  const int components = vtkAVSVolumeTextures::AveragedComponentsFor(layout);
-  const GLenum finalFormat = components == 1 ? GL_R32F : (components == 2 ? GL_RG32F : GL_RGBA32F);
   if (!this->Build(layout))
   {
     error = "the averaged-extinction compute shader did not compile (see the log above)";
     return false;
   }
   // Pass 0 classifies into Scratch[0] (data grid); the x pass shrinks x to the light grid (into
-  // Scratch[1]), the y pass y (into Scratch[2]), the z pass z (into AveragedExtinction); pass 4
-  // writes the scalars and the averaged extinction at the voxels into ScalarsAveraged.
+  // Scratch[1]), the y pass y (into Scratch[2]), the z pass z (into AveragedExtinction), which
+  // the light-volume pass and the ray caster sample.
   const std::array<int, 3>& d = dimensions;
   const std::array<int, 3>& l = lightDimensions;
   const std::array<int, 3> shapes[4] = { d, { l[0], d[1], d[2] }, { l[0], l[1], d[2] }, l };
@@ -83,11 +64,6 @@ bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
       return false;
     }
   }
-  if (!textures.UploadGrid(textures.ScalarsAveraged, d, components, nullptr, error))
-  {
-    return false;
-  }
-  textures.AveragedChannel = channel;
   const GLuint program = this->Program;
   vtkAVSRenderPasses::DiscardErrors(); // the check at the end is of this pass alone
   textures.Window->GetShaderCache()->ReleaseCurrentShader();
@@ -101,8 +77,6 @@ bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
   glUniform1i(location("u_scalars"), textures.Scalars->GetTextureUnit());
   textures.Classification.Bind(program);
   vtkAVSShaderOptions::SetClipUniforms(program, clip);
-  glBindImageTexture(
-    2, textures.ScalarsAveraged->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, finalFormat);
   for (int pass = 0; pass < 4; ++pass)
   {
     // Pass p reads images[p - 1] (pass 0: the scalars) and writes images[p].
@@ -130,25 +104,15 @@ bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
     }
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   }
-  // Pass 4 samples AveragedExtinction as a texture: no image may write it meanwhile.
-  glBindImageTexture(1, textures.Scratch[0]->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-  textures.AveragedExtinction->Activate();
-  glUniform1i(location("u_averaged"), textures.AveragedExtinction->GetTextureUnit());
-  glUniform3f(location("u_target"),
-    static_cast<float>(l[0]),
-    static_cast<float>(l[1]),
-    static_cast<float>(l[2]));
-  glUniform1i(location("u_pass"), 4);
-  glUniform3i(location("u_dimensions"), d[0], d[1], d[2]);
-  glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8), static_cast<GLuint>((d[1] + 7) / 8), 1);
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-  textures.AveragedExtinction->Deactivate();
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
   glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-  glBindImageTexture(2, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, finalFormat);
   glUseProgram(0);
   textures.Scalars->Deactivate();
   textures.Classification.Unbind();
+  // Not kept for the next rebuild: sigma_t on the data grid takes 4 bytes per voxel, more than
+  // the scalars (issue 16). Allocating them again costs on a software rasterizer: an opacity
+  // change on the 256^3 nebula with 4 lights took 1.54 s of CPU with them kept, 1.8 s without.
+  textures.ReleaseScratch();
   if (const GLenum status = glGetError())
   {
     error = "the averaged-extinction compute pass failed (GL error " + std::to_string(status) + ")";

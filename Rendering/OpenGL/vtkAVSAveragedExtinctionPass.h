@@ -5,9 +5,9 @@
  * The compute pass of avs_average_cs.glsl over the ray caster's textures
  * (vtkAVSVolumeTextures): pass 0 classifies the uploaded scalars into sigma_t on the data's grid
  * (zero outside the clip region), passes 1-3 box-sum it along x, y and z with the averaging half
- * widths, each axis interpolated onto the light grid as it is summed, into AveragedExtinction;
- * pass 4 writes the volume's channels and the averaged extinction interpolated back at the
- * voxels into ScalarsAveraged. The CPU twin is Rendering/Core/AveragedExtinction.cxx.
+ * widths, each axis interpolated onto the light grid as it is summed, into AveragedExtinction,
+ * which the light-volume pass and the ray caster sample. The CPU twin is
+ * Rendering/Core/AveragedExtinction.cxx.
  */
 #ifndef vtkAVSAveragedExtinctionPass_h
 #define vtkAVSAveragedExtinctionPass_h

@@ -1,7 +1,7 @@
 #include "vtkAVSClassification.h"
 
 #include "vtkAVSRenderPasses.h"
-#include "vtkAVSTextureMemory.h"
+#include "vtkAVSTextureUpload.h"
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkTextureObject.h"
@@ -11,7 +11,8 @@
 
 namespace
 {
-// A one-channel float 3D texture of `grid`, filtered linearly or by the nearest texel.
+// A one-channel float 3D texture of `grid` (vtkAVSTextureUpload), filtered linearly or by the
+// nearest texel.
 bool UploadGrid(vtkOpenGLRenderWindow* window,
   vtkSmartPointer<vtkTextureObject>& texture,
   const avs::Grid& grid,
@@ -19,37 +20,14 @@ bool UploadGrid(vtkOpenGLRenderWindow* window,
   const std::vector<vtkTextureObject*>& held,
   std::string& error)
 {
-  if (!vtkAVSTextureMemory::Admit(held, texture, grid.Geometry.Dimensions, 1, 0, error))
+  if (!vtkAVSTextureUpload::UploadFloats(
+        window, texture, grid.Geometry.Dimensions, 1, grid.Values.data(), 0, held, error))
   {
     return false;
   }
-  if (texture)
-  {
-    texture->ReleaseGraphicsResources(window);
-  }
-  const auto& d = grid.Geometry.Dimensions;
-  texture = vtkSmartPointer<vtkTextureObject>::New();
-  texture->SetContext(window);
-  texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->SetWrapR(vtkTextureObject::ClampToEdge);
   const int filter = nearest ? vtkTextureObject::Nearest : vtkTextureObject::Linear;
   texture->SetMinificationFilter(filter);
   texture->SetMagnificationFilter(filter);
-  vtkAVSRenderPasses::DiscardErrors();
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  if (!texture->Create3DFromRaw(static_cast<unsigned int>(d[0]),
-        static_cast<unsigned int>(d[1]),
-        static_cast<unsigned int>(d[2]),
-        1,
-        VTK_FLOAT,
-        const_cast<float*>(grid.Values.data())) ||
-    glGetError() != GL_NO_ERROR)
-  {
-    error = "the GPU could not allocate a mask or validity texture (out of GPU memory?)";
-    texture = nullptr;
-    return false;
-  }
   return true;
 }
 
@@ -91,32 +69,6 @@ vtkAVSClassification::Layout vtkAVSClassification::LayoutOf(const avs::VolumeSce
   l.Mask = m.MaskValues.Values.empty() ? 0 : static_cast<int>(m.Mask);
   l.Nearest = m.Sampling == avs::Interpolation::Nearest;
   return l;
-}
-
-std::vector<float> vtkAVSClassification::PackScalars(const avs::VolumeScene& scene,
-  const Layout& layout)
-{
-  const std::size_t n = scene.Scalars.Values.size();
-  const int channels = layout.ScalarChannels();
-  std::vector<float> packed(channels * n);
-  for (int c = 0; c < layout.Components; ++c)
-  {
-    const std::vector<float>& v =
-      c == 0 ? scene.Scalars.Values : scene.Medium.Components[c - 1].Values.Values;
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      packed[channels * i + c] = v[i];
-    }
-  }
-  if (layout.Validity == 1)
-  {
-    const std::vector<float>& v = scene.Medium.Validity.Values;
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      packed[channels * i + layout.Components] = v[i];
-    }
-  }
-  return packed;
 }
 
 void vtkAVSClassification::ReleaseTransfer()
@@ -323,6 +275,8 @@ void vtkAVSClassification::Bind(unsigned int program)
   glUniform1fv(location("u_weight"), 4, this->Weight);
   glUniform3fv(location("u_gradientScale"), 1, this->GradientScale);
   glUniform3fv(location("u_voxelStep"), 1, this->VoxelStep);
+  glUniform4fv(location("u_valueScale"), 1, this->ValueScale);
+  glUniform4fv(location("u_valueShift"), 1, this->ValueShift);
   if (this->Mask)
   {
     this->Mask->Activate();
@@ -338,6 +292,13 @@ void vtkAVSClassification::Bind(unsigned int program)
     this->Validity->Activate();
     glUniform1i(location("u_validity"), this->Validity->GetTextureUnit());
   }
+}
+
+void vtkAVSClassification::SetValueMap(float scale, float shift)
+{
+  // Every channel: a validity channel comes only with float texels (scale 1, shift 0).
+  std::fill(this->ValueScale, this->ValueScale + 4, scale);
+  std::fill(this->ValueShift, this->ValueShift + 4, shift);
 }
 
 void vtkAVSClassification::Unbind()

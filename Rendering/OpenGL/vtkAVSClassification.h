@@ -47,10 +47,6 @@ public:
   };
   static Layout LayoutOf(const avs::VolumeScene& scene);
 
-  /// The volume texture's texels: the components times the validity, then the validity when it
-  /// goes with them (Layout::ScalarChannels channels per voxel).
-  static std::vector<float> PackScalars(const avs::VolumeScene& scene, const Layout& layout);
-
   void SetWindow(vtkOpenGLRenderWindow* window) { this->Window = window; }
   void ReleaseGraphicsResources(vtkWindow* window);
 
@@ -68,6 +64,9 @@ public:
     return { this->Mask.Get(), this->Validity.Get() };
   }
 
+  /// How the volume texture's components map back to data values: texel * scale + shift
+  /// (vtkAVSTextureUpload::TexelFormat; 1 and 0 for float texels), after Upload.
+  void SetValueMap(float scale, float shift);
   /// Binds the textures and sets the uniforms on the GL program `program` (current).
   void Bind(unsigned int program);
   void Unbind();
@@ -90,6 +89,8 @@ private:
   float Weight[4] = { 1, 1, 1, 1 };
   float GradientScale[3] = { 0.5f, 0.5f, 0.5f };
   float VoxelStep[3] = { 1, 1, 1 };
+  float ValueScale[4] = { 1, 1, 1, 1 }; // u_valueScale
+  float ValueShift[4] = { 0, 0, 0, 0 }; // u_valueShift
   float MaskBlend = 1.0f;
   float Labels = 0.0f;
 };

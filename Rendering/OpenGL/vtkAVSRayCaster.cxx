@@ -76,9 +76,11 @@ int vtkAVSRayCaster::MaximumTextureSize3D() const
 }
 
 // The uploads: vtkAVSVolumeTextures.
-bool vtkAVSRayCaster::UploadScalars(const avs::VolumeScene& scene, std::string& error)
+bool vtkAVSRayCaster::UploadScalars(const avs::VolumeScene& scene,
+  int scalarType,
+  std::string& error)
 {
-  return this->Textures.UploadScalars(scene, error);
+  return this->Textures.UploadScalars(scene, scalarType, error);
 }
 
 bool vtkAVSRayCaster::UploadClassification(const avs::VolumeScene& scene, std::string& error)
@@ -86,20 +88,9 @@ bool vtkAVSRayCaster::UploadClassification(const avs::VolumeScene& scene, std::s
   return this->Textures.UploadClassification(scene, error);
 }
 
-bool vtkAVSRayCaster::UploadScalarsAveraged(const avs::VolumeScene& scene,
-  const avs::Grid& averagedAtVoxels,
-  std::string& error)
+bool vtkAVSRayCaster::UploadAveraged(const avs::Grid& averaged, std::string& error)
 {
-  return this->Textures.UploadScalarsAveraged(scene, averagedAtVoxels, error);
-}
-
-bool vtkAVSRayCaster::UploadAveragedExtinction(const avs::Grid& averaged, std::string& error)
-{
-  return this->Textures.UploadGrid(this->Textures.AveragedExtinction,
-    averaged.Geometry.Dimensions,
-    1,
-    averaged.Values.data(),
-    error);
+  return this->Textures.UploadAveraged(averaged, error);
 }
 
 bool vtkAVSRayCaster::UploadLightVolumes(const std::vector<avs::Grid>& lights, std::string& error)
@@ -237,12 +228,8 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   }
   const bool blend = frame.Mode == avs::RenderMode::EmissionAbsorption;
   if (!this->EnsureProgram(frame.Mode,
-        vtkAVSShaderAssembly::RayCastDefines(frame.Mode,
-          frame.Parameters,
-          frame.Lights,
-          static_cast<int>(tx.TableSize[1]),
-          layout,
-          tx.AveragedChannel) +
+        vtkAVSShaderAssembly::RayCastDefines(
+          frame.Mode, frame.Parameters, frame.Lights, static_cast<int>(tx.TableSize[1]), layout) +
           vtkAVSShaderOptions::ClipDefines(frame.Clip) +
           (blend ? vtkAVSShaderOptions::BlendDefines(frame.Blend) : std::string())))
   {
@@ -275,12 +262,8 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   program->SetUniformi("u_depth", depth->GetTextureUnit());
   // The volume and its classification (avs_classify.glsl), with the interpolation type's filter.
   vtkAVSVolumeTextures::SetVolumeFilter(tx.Scalars, layout.Nearest);
-  vtkAVSVolumeTextures::SetVolumeFilter(tx.ScalarsAveraged, layout.Nearest);
-  if (frame.Mode != avs::RenderMode::AmbientScattering || tx.AveragedChannel < 0)
-  {
-    tx.Scalars->Activate();
-    program->SetUniformi("u_scalars", tx.Scalars->GetTextureUnit());
-  }
+  tx.Scalars->Activate();
+  program->SetUniformi("u_scalars", tx.Scalars->GetTextureUnit());
   tx.Classification.Bind(static_cast<unsigned int>(program->GetHandle()));
 
   if (frame.Mode == avs::RenderMode::AmbientOcclusion)
@@ -308,7 +291,14 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     const int n =
       static_cast<int>(std::min<std::size_t>(frame.Lights.size(), MaximumNumberOfLights));
     const int textures = vtkAVSVolumeTextures::LightTexturesFor(n);
-    if (!tx.Table || !tx.ScalarsAveraged ||
+    auto dimensionsOf = [](vtkTextureObject* t) -> std::array<int, 3>
+    {
+      return { static_cast<int>(t->GetWidth()),
+        static_cast<int>(t->GetHeight()),
+        static_cast<int>(t->GetDepth()) };
+    };
+    if (!tx.Table || !tx.AveragedExtinction ||
+      dimensionsOf(tx.AveragedExtinction) != frame.LightVolumeDimensions ||
       (textures > 0 && frame.LightVolumeDimensions != tx.LightTextureDimensions) ||
       !std::all_of(tx.LightVolumes,
         tx.LightVolumes + textures,
@@ -317,9 +307,8 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
       error = "the scattering volumes are not uploaded";
       return false;
     }
-    tx.ScalarsAveraged->Activate();
-    program->SetUniformi(tx.AveragedChannel >= 0 ? "u_scalarsAveraged" : "u_averagedAtVoxels",
-      tx.ScalarsAveraged->GetTextureUnit());
+    tx.AveragedExtinction->Activate();
+    program->SetUniformi("u_averagedExtinction", tx.AveragedExtinction->GetTextureUnit());
     const char* names[vtkAVSVolumeTextures::NumberOfLightTextures] = { "u_lightVolumes0",
       "u_lightVolumes1" };
     for (int t = 0; t < textures; ++t)
@@ -395,7 +384,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   for (vtkTextureObject* t : { this->Depth.GetTexture(),
          tx.Scalars.Get(),
          tx.Occlusion.Get(),
-         tx.ScalarsAveraged.Get(),
+         tx.AveragedExtinction.Get(),
          tx.LightVolumes[0].Get(),
          tx.LightVolumes[1].Get(),
          tx.Table.Get() })
@@ -417,6 +406,16 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
 vtkTextureObject* vtkAVSRayCaster::GetAveragedExtinctionTexture() const
 {
   return this->Textures.AveragedExtinction;
+}
+
+double vtkAVSRayCaster::VolumeTextureBytes() const
+{
+  return this->Textures.HeldBytes();
+}
+
+double vtkAVSRayCaster::PeakVolumeTextureBytes() const
+{
+  return this->Textures.GetPeakBytes();
 }
 
 vtkTextureObject* vtkAVSRayCaster::GetLightVolumeTexture(int t) const

@@ -72,23 +72,15 @@ public:
   int MaximumTextureSize3D() const;
 
   /// Texture uploads; return false and say why in `error` when the GPU refuses. The volume:
-  /// its components (and the validity of NaN data) in one texture
-  /// (vtkAVSClassification::PackScalars).
-  bool UploadScalars(const avs::VolumeScene& scene, std::string& error);
+  /// its components (and the validity of NaN data) in one texture, in the texel format of the
+  /// array's VTK type `scalarType` (vtkAVSTextureUpload).
+  bool UploadScalars(const avs::VolumeScene& scene, int scalarType, std::string& error);
   /// The classification's tables, mask and uniforms (vtkAVSClassification), after the scalars.
   bool UploadClassification(const avs::VolumeScene& scene, std::string& error);
-  /// The CPU's ambient-scattering volumes as the ray caster fetches them: the volume's
-  /// channels beside the averaged extinction interpolated at the voxels (both on the data's
-  /// grid, one texture when they fit into four channels, else the averaged extinction in a
-  /// texture of its own) ...
-  bool UploadScalarsAveraged(const avs::VolumeScene& scene,
-    const avs::Grid& averagedAtVoxels,
-    std::string& error);
-  /// The averaged extinction on the light grid computed elsewhere (distributed rendering: the
-  /// pieces' shares summed over the processes), where ComputeAveragedExtinction would put it
-  /// for the light-volume pass (ComputeLightVolume) and the diffusion solve.
-  bool UploadAveragedExtinction(const avs::Grid& averaged, std::string& error);
-  /// ... and up to 8 light volumes on one (the light) grid, four to an RGBA texture.
+  /// The CPU's ambient-scattering volumes: the averaged extinction on the light grid (which
+  /// the ray caster samples with the light volumes' coordinate) ...
+  bool UploadAveraged(const avs::Grid& averaged, std::string& error);
+  /// ... and up to 8 light volumes on the same grid, four to an RGBA texture.
   bool UploadLightVolumes(const std::vector<avs::Grid>& lights, std::string& error);
 
   /// Ambient occlusion computed on the GPU from the extinction grid into the occlusion texture,
@@ -103,8 +95,7 @@ public:
   /// The averaged extinction computed on the GPU from the uploaded scalars and transfer function
   /// (classification on the data's grid `dimensions`, then box sums along x, y, z with the half
   /// widths, each axis interpolated onto the light grid `lightDimensions` as it is summed) into
-  /// the averaged texture (light grid), then interpolated back at the voxels beside the scalars
-  /// into the ray caster's two-channel volume texture.
+  /// the averaged texture (light grid), which the light-volume pass and the ray caster sample.
   /// sigma_t is 0 outside `clip` (in the data's index frame).
   bool ComputeAveragedExtinction(const std::array<int, 3>& dimensions,
     const std::array<int, 3>& lightDimensions,
@@ -134,6 +125,11 @@ public:
   /// on the light grid (null where absent).
   vtkTextureObject* GetAveragedExtinctionTexture() const;
   vtkTextureObject* GetLightVolumeTexture(int t) const;
+  /// Bytes of the volume's 3D textures (vtkAVSVolumeTextures::VolumeTextures), as the GPU
+  /// memory budget counts them.
+  double VolumeTextureBytes() const;
+  /// The most they held at once since the last release (during a precomputation).
+  double PeakVolumeTextureBytes() const;
 
   struct Frame
   {

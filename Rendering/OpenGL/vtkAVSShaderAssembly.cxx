@@ -40,19 +40,10 @@ std::string vtkAVSShaderAssembly::RayCastDefines(avs::RenderMode mode,
   const avs::ScatteringParameters& p,
   const std::vector<avs::Light>& lights,
   int tauNodes,
-  const vtkAVSClassification::Layout& layout,
-  int averagedChannel)
+  const vtkAVSClassification::Layout& layout)
 {
-  // The classification's choices (avs_classify.glsl); ambient scattering reads the volume's
-  // channels and the averaged extinction from one texture where they fit.
+  // The classification's choices (avs_classify.glsl).
   std::string defines = layout.Defines();
-  if (mode == avs::RenderMode::AmbientScattering)
-  {
-    defines += averagedChannel >= 0 ? "#define AVS_VOLUME_TEXTURE u_scalarsAveraged\n"
-                                      "#define AVS_AVERAGED_CHANNEL " +
-        std::to_string(averagedChannel) + "\n"
-                                    : std::string("#define AVS_AVERAGED_TEXTURE\n");
-  }
   if (mode == avs::RenderMode::EmissionAbsorption)
   {
     return defines;

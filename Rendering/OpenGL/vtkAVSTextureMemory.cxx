@@ -13,13 +13,22 @@ double BytesPerComponent(unsigned int internalFormat)
 {
   switch (internalFormat)
   {
+    case GL_R8:
+    case GL_RG8:
+    case GL_RGB8:
+    case GL_RGBA8:
+      return 1.0;
+    case GL_R16:
+    case GL_RG16:
+    case GL_RGB16:
+    case GL_RGBA16:
     case GL_R16F:
     case GL_RG16F:
     case GL_RGB16F:
     case GL_RGBA16F:
       return 2.0;
     default:
-      return 4.0; // the ray caster's volume textures are 32-bit floats otherwise
+      return 4.0; // the ray caster's other volume textures are 32-bit floats
   }
 }
 

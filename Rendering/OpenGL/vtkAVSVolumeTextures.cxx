@@ -2,10 +2,12 @@
 
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSTextureMemory.h"
+#include "vtkAVSTextureUpload.h"
 
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <cmath>
 
 void vtkAVSVolumeTextures::SetWindow(vtkOpenGLRenderWindow* window)
 {
@@ -17,7 +19,6 @@ void vtkAVSVolumeTextures::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Classification.ReleaseGraphicsResources(window);
   for (vtkTextureObject* t : { this->Scalars.Get(),
-         this->ScalarsAveraged.Get(),
          this->AveragedExtinction.Get(),
          this->Occlusion.Get(),
          this->Table.Get(),
@@ -32,8 +33,7 @@ void vtkAVSVolumeTextures::ReleaseGraphicsResources(vtkWindow* window)
       t->ReleaseGraphicsResources(window);
     }
   }
-  this->Scalars = this->ScalarsAveraged = this->AveragedExtinction = this->Occlusion = this->Table =
-    nullptr;
+  this->Scalars = this->AveragedExtinction = this->Occlusion = this->Table = nullptr;
   for (auto& t : this->LightVolumes)
   {
     t = nullptr;
@@ -43,6 +43,7 @@ void vtkAVSVolumeTextures::ReleaseGraphicsResources(vtkWindow* window)
     t = nullptr;
   }
   this->LightTextureDimensions = { 0, 0, 0 };
+  this->PeakBytes = 0.0;
   this->SoftwareRenderer = -1; // asked again in the next context
   if (window == this->Window)
   {
@@ -110,78 +111,132 @@ bool vtkAVSVolumeTextures::UploadGrid(vtkSmartPointer<vtkTextureObject>& texture
   std::string& error,
   unsigned int internalFormat)
 {
-  const int limit = this->MaximumTextureSize3D();
-  if (d[0] > limit || d[1] > limit || d[2] > limit)
-  {
-    error = "the volume (" + std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " +
-      std::to_string(d[2]) +
-      ") is too large for the GPU (largest 3D texture: " + std::to_string(limit) + " per axis)";
-    return false;
-  }
-  // The budget of AVS_GPU_MEMORY_LIMIT_MB (vtkAVSTextureMemory.h), before anything is allocated.
-  if (!vtkAVSTextureMemory::Admit(
-        this->VolumeTextures(), texture, d, components, internalFormat, error))
+  if (!vtkAVSTextureUpload::UploadFloats(
+        this->Window, texture, d, components, data, internalFormat, this->VolumeTextures(), error))
   {
     return false;
   }
-  if (texture && !data && !internalFormat &&
-    texture->GetWidth() == static_cast<unsigned int>(d[0]) &&
-    texture->GetHeight() == static_cast<unsigned int>(d[1]) &&
-    texture->GetDepth() == static_cast<unsigned int>(d[2]) &&
-    texture->GetComponents() == components)
-  {
-    return true; // to be written on the GPU: the storage is reused
-  }
-  if (texture)
-  {
-    texture->ReleaseGraphicsResources(this->Window);
-  }
-  texture = vtkSmartPointer<vtkTextureObject>::New();
-  texture->SetContext(this->Window);
-  ConfigureSampling(texture);
-  if (internalFormat)
-  {
-    texture->SetInternalFormat(internalFormat);
-  }
-  vtkAVSRenderPasses::DiscardErrors(); // the check below is of this upload alone
-  // Rows of floats are not padded.
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  if (!texture->Create3DFromRaw(static_cast<unsigned int>(d[0]),
-        static_cast<unsigned int>(d[1]),
-        static_cast<unsigned int>(d[2]),
-        components,
-        VTK_FLOAT,
-        const_cast<float*>(data)))
-  {
-    error = "the GPU could not allocate a " + std::to_string(d[0]) + " x " + std::to_string(d[1]) +
-      " x " + std::to_string(d[2]) + " texture (out of GPU memory?)";
-    texture = nullptr;
-    return false;
-  }
-  if (glGetError() != GL_NO_ERROR)
-  {
-    error = "the GPU refused a 3D texture of " + std::to_string(d[0]) + " x " +
-      std::to_string(d[1]) + " x " + std::to_string(d[2]) + " (out of GPU memory?)";
-    texture->ReleaseGraphicsResources(this->Window);
-    texture = nullptr;
-    return false;
-  }
+  this->NotePeak();
   return true;
 }
 
-bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene, std::string& error)
+double vtkAVSVolumeTextures::HeldBytes() const
+{
+  double bytes = 0.0;
+  for (vtkTextureObject* t : this->VolumeTextures())
+  {
+    bytes += vtkAVSTextureMemory::Bytes(t);
+  }
+  return bytes;
+}
+
+void vtkAVSVolumeTextures::NotePeak()
+{
+  this->PeakBytes = std::max(this->PeakBytes, this->HeldBytes());
+}
+
+void vtkAVSVolumeTextures::ReleaseScratch()
+{
+  for (auto& t : this->Scratch)
+  {
+    if (t)
+    {
+      t->ReleaseGraphicsResources(this->Window);
+    }
+    t = nullptr;
+  }
+}
+
+namespace
+{
+// Writes the slices [z0, z1) of the scene's channels (the components, then the validity where
+// the layout puts it beside them) into `texels` as T, each value v stored as
+// round(format.Encode(v)) for normalized texels and as v for floats.
+template<typename T>
+void PackSlab(const avs::VolumeScene& scene,
+  const vtkAVSClassification::Layout& layout,
+  const vtkAVSTextureUpload::TexelFormat& format,
+  int z0,
+  int z1,
+  T* texels)
+{
+  const std::size_t slice = static_cast<std::size_t>(scene.Scalars.Geometry.Dimensions[0]) *
+    scene.Scalars.Geometry.Dimensions[1];
+  const std::size_t begin = slice * z0, end = slice * z1;
+  const int channels = layout.ScalarChannels();
+  for (int c = 0; c < channels; ++c)
+  {
+    const std::vector<float>& v = c == layout.Components ? scene.Medium.Validity.Values
+      : c == 0                                           ? scene.Scalars.Values
+               : scene.Medium.Components[c - 1].Values.Values;
+    T* out = texels + c;
+    if (format.IsNormalized())
+    {
+      const double top = static_cast<double>(format.Scale);
+      for (std::size_t i = begin; i < end; ++i, out += channels)
+      {
+        *out = static_cast<T>(std::lround(std::clamp(format.Encode(v[i]), 0.0, top)));
+      }
+    }
+    else
+    {
+      for (std::size_t i = begin; i < end; ++i, out += channels)
+      {
+        *out = static_cast<T>(v[i]);
+      }
+    }
+  }
+}
+} // namespace
+
+bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
+  int scalarType,
+  std::string& error)
 {
   const vtkAVSClassification::Layout layout = vtkAVSClassification::LayoutOf(scene);
-  const std::vector<float> packed = vtkAVSClassification::PackScalars(scene, layout);
-  if (!this->UploadGrid(this->Scalars,
+  const int channels = layout.ScalarChannels();
+  // NaN voxels: the validity goes with the components (or the components are multiplied by
+  // it), so those volumes stay floats whatever their type.
+  const vtkAVSTextureUpload::TexelFormat format =
+    vtkAVSTextureUpload::TexelFormat::ForScalars(scalarType, channels, layout.Validity != 0);
+  const std::size_t slice = static_cast<std::size_t>(scene.Scalars.Geometry.Dimensions[0]) *
+    scene.Scalars.Geometry.Dimensions[1];
+  const vtkAVSTextureUpload::SlabFill fill = [&scene, &layout, &format, channels, slice](
+                                               int z0, int z1, void* texels) -> const void*
+  {
+    if (!format.IsNormalized() && channels == 1)
+    {
+      return scene.Scalars.Values.data() + slice * z0; // the grid itself
+    }
+    if (format.HostType == VTK_UNSIGNED_CHAR)
+    {
+      PackSlab(scene, layout, format, z0, z1, static_cast<unsigned char*>(texels));
+    }
+    else if (format.HostType == VTK_UNSIGNED_SHORT)
+    {
+      PackSlab(scene, layout, format, z0, z1, static_cast<unsigned short*>(texels));
+    }
+    else
+    {
+      PackSlab(scene, layout, format, z0, z1, static_cast<float*>(texels));
+    }
+    return texels;
+  };
+  if (!vtkAVSTextureUpload::Upload(this->Window,
+        this->Scalars,
         scene.Scalars.Geometry.Dimensions,
-        layout.ScalarChannels(),
-        packed.data(),
+        channels,
+        format,
+        fill,
+        this->VolumeTextures(),
         error))
   {
     return false;
   }
+  this->NotePeak();
   this->ScalarLayout = layout;
+  this->ScalarFormat = format;
+  this->Classification.SetValueMap(format.Scale, format.Shift);
   return true;
 }
 
@@ -190,13 +245,17 @@ bool vtkAVSVolumeTextures::UploadClassification(const avs::VolumeScene& scene, s
   this->Classification.SetWindow(this->Window);
   std::vector<vtkTextureObject*> held = this->VolumeTextures();
   held.resize(held.size() - this->Classification.VolumeTextures().size()); // counted by it
-  return this->Classification.Upload(scene, held, error);
+  if (!this->Classification.Upload(scene, held, error))
+  {
+    return false;
+  }
+  this->Classification.SetValueMap(this->ScalarFormat.Scale, this->ScalarFormat.Shift);
+  return true;
 }
 
 std::vector<vtkTextureObject*> vtkAVSVolumeTextures::VolumeTextures() const
 {
   std::vector<vtkTextureObject*> held = { this->Scalars,
-    this->ScalarsAveraged,
     this->AveragedExtinction,
     this->Occlusion,
     this->LightVolumes[0],
@@ -209,18 +268,6 @@ std::vector<vtkTextureObject*> vtkAVSVolumeTextures::VolumeTextures() const
     held.push_back(t); // last: UploadClassification leaves them to the classification
   }
   return held;
-}
-
-int vtkAVSVolumeTextures::AveragedChannelFor(const vtkAVSClassification::Layout& layout)
-{
-  const int k = layout.ScalarChannels();
-  return k < 4 ? k : -1;
-}
-
-int vtkAVSVolumeTextures::AveragedComponentsFor(const vtkAVSClassification::Layout& layout)
-{
-  const int channel = AveragedChannelFor(layout);
-  return channel < 0 ? 1 : (channel + 1 == 2 ? 2 : 4); // image formats: r32f, rg32f, rgba32f
 }
 
 bool vtkAVSVolumeTextures::UploadOcclusion(const avs::Grid& occlusion, std::string& error)
@@ -263,37 +310,10 @@ bool vtkAVSVolumeTextures::EnsureLightTextures(const std::array<int, 3>& dimensi
   return true;
 }
 
-bool vtkAVSVolumeTextures::UploadScalarsAveraged(const avs::VolumeScene& scene,
-  const avs::Grid& averagedAtVoxels,
-  std::string& error)
+bool vtkAVSVolumeTextures::UploadAveraged(const avs::Grid& averaged, std::string& error)
 {
-  const std::size_t voxels = scene.Scalars.Values.size();
-  if (averagedAtVoxels.Values.size() != voxels)
-  {
-    error = "the averaged extinction is not on the data's grid";
-    return false;
-  }
-  const vtkAVSClassification::Layout layout = vtkAVSClassification::LayoutOf(scene);
-  const int channel = AveragedChannelFor(layout);
-  const int components = AveragedComponentsFor(layout);
-  std::vector<float> packed(components * voxels, 0.0f);
-  if (channel >= 0)
-  {
-    const int k = layout.ScalarChannels();
-    const std::vector<float> scalars = vtkAVSClassification::PackScalars(scene, layout);
-    for (std::size_t i = 0; i < voxels; ++i)
-    {
-      std::copy(&scalars[k * i], &scalars[k * i] + k, &packed[components * i]);
-      packed[components * i + channel] = averagedAtVoxels.Values[i];
-    }
-  }
-  else
-  {
-    packed = averagedAtVoxels.Values;
-  }
-  this->AveragedChannel = channel;
   return this->UploadGrid(
-    this->ScalarsAveraged, scene.Scalars.Geometry.Dimensions, components, packed.data(), error);
+    this->AveragedExtinction, averaged.Geometry.Dimensions, 1, averaged.Values.data(), error);
 }
 
 bool vtkAVSVolumeTextures::UploadLightVolumes(const std::vector<avs::Grid>& lights,

@@ -2,15 +2,14 @@
  * @class   vtkAVSVolumeTextures
  * @brief   the ray caster's textures of one render window and their uploads (private)
  *
- * Holds every texture vtkAVSRayCaster draws with or its compute passes write: the scalars, the
- * classification (vtkAVSClassification), the ambient-scattering volume texture (the volume's
- * channels beside the averaged extinction at the voxels), the averaged extinction on the light
- * grid, the packed light volumes, the ambient-occlusion volume, the scattering-table slice and
- * the averaged-extinction pass's intermediate grids. Each 3D allocation goes through
- * UploadGrid, which checks the context's 3D-texture limit and the GPU memory budget
- * (vtkAVSTextureMemory) first. The compute passes (vtkAVSAveragedExtinctionPass,
- * vtkAVSLightVolumePass, vtkAVSOcclusionPass) read and write the members directly; the ray
- * caster binds them for its frame.
+ * Holds every texture vtkAVSRayCaster draws with or its compute passes write: the scalars (in
+ * their texel format, vtkAVSTextureUpload), the classification (vtkAVSClassification), the
+ * averaged extinction on the light grid, the packed light volumes, the ambient-occlusion
+ * volume, the scattering-table slice and the averaged-extinction pass's intermediate grids.
+ * Each 3D allocation goes through vtkAVSTextureUpload, which checks the context's 3D-texture
+ * limit and the GPU memory budget (vtkAVSTextureMemory) first. The compute passes
+ * (vtkAVSAveragedExtinctionPass, vtkAVSLightVolumePass, vtkAVSOcclusionPass) read and write the
+ * members directly; the ray caster binds them for its frame.
  */
 #ifndef vtkAVSVolumeTextures_h
 #define vtkAVSVolumeTextures_h
@@ -19,6 +18,7 @@
 #include "ReferenceRenderer.h"
 #include "ScatteringTable.h"
 #include "vtkAVSClassification.h"
+#include "vtkAVSTextureUpload.h"
 
 #include "vtkOpenGLRenderWindow.h" // for vtkWeakPointer<vtkOpenGLRenderWindow>
 #include "vtkSmartPointer.h"
@@ -59,7 +59,8 @@ public:
 
   /// A 3D float texture of `components` channels (data may be null: allocated, undefined, and
   /// storage of the same size reused), in the GL internal format `internalFormat` (0: 32-bit
-  /// floats). Returns false and says why in `error` when the GPU refuses.
+  /// floats), through vtkAVSTextureUpload with this volume's textures as the budget's.
+  /// Returns false and says why in `error` when the GPU refuses.
   bool UploadGrid(vtkSmartPointer<vtkTextureObject>& texture,
     const std::array<int, 3>& dimensions,
     int components,
@@ -71,11 +72,11 @@ public:
   bool EnsureLightTextures(const std::array<int, 3>& dimensions, int count, std::string& error);
 
   /// The uploads of vtkAVSRayCaster (documented there).
-  bool UploadScalars(const avs::VolumeScene& scene, std::string& error);
+  /// The scalars in the texel format of their VTK type `scalarType`
+  /// (vtkAVSTextureUpload::TexelFormat::ForScalars), converted slab by slab.
+  bool UploadScalars(const avs::VolumeScene& scene, int scalarType, std::string& error);
   bool UploadClassification(const avs::VolumeScene& scene, std::string& error);
-  bool UploadScalarsAveraged(const avs::VolumeScene& scene,
-    const avs::Grid& averagedAtVoxels,
-    std::string& error);
+  bool UploadAveraged(const avs::Grid& averaged, std::string& error);
   bool UploadLightVolumes(const std::vector<avs::Grid>& lights, std::string& error);
   bool UploadOcclusion(const avs::Grid& occlusion, std::string& error);
   bool UploadTableSlice(const avs::ScatteringSlice& slice, std::string& error);
@@ -83,34 +84,34 @@ public:
   /// Every 3D texture held for the volume (the GPU memory budget counts them), the
   /// classification's last.
   std::vector<vtkTextureObject*> VolumeTextures() const;
+  /// Bytes of the volume textures held now (vtkAVSTextureMemory::Bytes), and the most they
+  /// held at once since the last release (the precomputation's scratch grids included).
+  double HeldBytes() const;
+  double GetPeakBytes() const { return this->PeakBytes; }
+  /// Releases the averaged-extinction pass's intermediate grids (after the pass).
+  void ReleaseScratch();
   /// The filter of a volume texture: the nearest voxel or trilinear (the interpolation type).
   static void SetVolumeFilter(vtkTextureObject* texture, bool nearest);
   /// Clamped to the edge, linear: how every texture of the ray caster is sampled.
   static void ConfigureSampling(vtkTextureObject* texture);
-  /// Which channel of ScalarsAveraged holds the averaged extinction for a layout (-1: it is
-  /// alone in it), and its channel count.
-  static int AveragedChannelFor(const vtkAVSClassification::Layout& layout);
-  static int AveragedComponentsFor(const vtkAVSClassification::Layout& layout);
 
   /// Weak: the window may be deleted before the mapper, and its context took its resources.
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   vtkSmartPointer<vtkTextureObject> Scalars, Occlusion, Table;
   vtkAVSClassification Classification;
-  /// The layout the scalars were uploaded with (vtkAVSClassification::Layout).
+  /// The layout the scalars were uploaded with (vtkAVSClassification::Layout), and their texel
+  /// format (its Scale and Shift map the texels back to data values in the shaders).
   vtkAVSClassification::Layout ScalarLayout;
-  /// Data grid, for ambient scattering: the volume's channels and then the averaged sigma_t at
-  /// the voxel (AveragedChannel) or, when they do not fit into four channels, the averaged
-  /// sigma_t alone (AveragedChannel -1).
-  vtkSmartPointer<vtkTextureObject> ScalarsAveraged;
-  int AveragedChannel = 1;
+  vtkAVSTextureUpload::TexelFormat ScalarFormat;
   /// Packed on the light grid: (T0-T3), (T4-T7).
   vtkSmartPointer<vtkTextureObject> LightVolumes[NumberOfLightTextures];
   std::array<int, 3> LightTextureDimensions{ 0, 0, 0 };
-  /// The averaged extinction on the light grid, which the light-volume pass samples.
+  /// The averaged extinction on the light grid, which the light-volume pass and the ray caster
+  /// sample.
   vtkSmartPointer<vtkTextureObject> AveragedExtinction;
   /// The averaged-extinction pass's intermediate grids (sigma_t on the data grid, then reduced
-  /// along x and along y), kept between rebuilds: allocating them again costs more than the
-  /// pass on a software rasterizer.
+  /// along x and along y), released after the pass (ReleaseScratch): sigma_t alone takes 4
+  /// bytes per voxel, more than the scalars.
   vtkSmartPointer<vtkTextureObject> Scratch[3];
   /// The table slice: log(F(tau) exp(2 tau)) on its tau nodes (the light-volume pass's uniform
   /// array), its size (theta, tau) and its longest tau.
@@ -119,6 +120,8 @@ public:
   float TableTauMaximum = 1.0f;
 
 private:
+  void NotePeak();
+  double PeakBytes = 0.0;
   mutable int SoftwareRenderer = -1; ///< -1 unknown, 0 no, 1 yes (IsSoftwareRenderer)
 };
 

@@ -18,21 +18,11 @@
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 #define AVS_EFFECT_TERMINATION
 #endif
-// The averaged sigma_t at the voxels (data grid): channel AVS_AVERAGED_CHANNEL of the volume
-// texture (u_scalarsAveraged, the volume's channels and then it), or, when they do not fit
-// into four channels, a texture of its own.
-#ifdef AVS_AVERAGED_TEXTURE
-uniform sampler3D u_averagedAtVoxels;
-float Averaged(vec4 voxel, vec3 coordinate)
-{
-  return textureLod(u_averagedAtVoxels, coordinate, 0.0).r;
-}
-#else
-float Averaged(vec4 voxel, vec3 coordinate)
-{
-  return voxel[AVS_AVERAGED_CHANNEL];
-}
-#endif
+// The averaged sigma_t on the light grid (where the precomputation leaves it), read at the
+// sample with the light volumes' coordinate: one more fetch per sample than a channel beside
+// the scalars on the data grid, for a texture 4 bytes per light-grid point instead of 8 per
+// voxel (ARCHITECTURE.md, "Texel formats").
+uniform sampler3D u_averagedExtinction;
 // Light grid: tube transmittance of lights 0-3, then 4-7.
 #if AVS_LIGHT_TEXTURES > 0
 uniform sampler3D u_lightVolumes0;
@@ -144,13 +134,13 @@ vec3 LightInScattering(int j, vec3 world, vec3 direction, float tube, float v)
 }
 
 // sigma_t(x') c(x') sum_j E_j(x') A(theta_j; r sigma~_t(x')) at the continuous voxel index x'
-// (world position `world`) for a ray along `direction`, with `classified` = (c, sigma_t) and
-// `averaged` = averaged sigma_t there.
-vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified, float averaged)
+// (world position `world`) for a ray along `direction`, with `classified` = (c, sigma_t).
+vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified)
 {
-  float v = TableTauCoordinate(u_ambientRadius * averaged);
-  // The tube transmittances of all lights at x', four to a texture fetch.
+  // The averaged sigma_t and the tube transmittances of all lights at x' (light grid), four
+  // lights to a texture fetch.
   vec3 lc = index * g_lightScale + g_lightOffset;
+  float v = TableTauCoordinate(u_ambientRadius * textureLod(u_averagedExtinction, lc, 0.0).r);
 #if AVS_LIGHT_TEXTURES > 0
   vec4 tubes0 = textureLod(u_lightVolumes0, lc, 0.0);
 #else
@@ -221,7 +211,7 @@ bool EffectContinues(float T, int i)
     {
       float lagged = mix(newer, older, g_lagFraction);
       L += lagged * dt *
-        InScattered(index, origin + t * direction, direction, here, Averaged(voxel, coordinate));
+        InScattered(index, origin + t * direction, direction, here);
     }
 #else
     if (i == 0)
@@ -238,8 +228,7 @@ bool EffectContinues(float T, int i)
         AVS_CROP(s1, first);
         if (s1.a > 0.0)
         {
-          L += dt * InScattered(first, origin + tj * direction, direction, s1,
-                      Averaged(firstVoxel, firstCoordinate));
+          L += dt * InScattered(first, origin + tj * direction, direction, s1);
         }
       }
     }
@@ -255,8 +244,7 @@ bool EffectContinues(float T, int i)
       AVS_CROP(s2, ahead);
       if (s2.a > 0.0)
       {
-        L += lagged * dt * InScattered(ahead, origin + ta * direction, direction, s2,
-                             Averaged(aheadVoxel, aheadCoordinate));
+        L += lagged * dt * InScattered(ahead, origin + ta * direction, direction, s2);
       }
     }
 #endif

@@ -9,25 +9,19 @@
 // that axis by linear interpolation between the two voxels around each (so each pass shrinks
 // its axis to the target's size, and the three together give the data-grid average
 // interpolated trilinearly). Pass 3 also divides by the full box count, so voxels outside count
-// as 0; its result is what the light-volume pass samples. Pass 4 interpolates it back at the
-// data's voxels, beside each voxel's scalar, into the ray caster's two-channel volume texture
-// (the volume's channels, then the averaged sigma_t at channel AVS_AVERAGED_CHANNEL), so that
-// one fetch per sample gives both; with AVS_AVERAGED_TEXTURE (too many channels) it writes the
-// averaged sigma_t alone. The classification's defines and AVS_FINAL_FORMAT come before this.
+// as 0; its result is what the light-volume pass and the ray caster sample. The
+// classification's defines come before this.
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(r32f, binding = 0) uniform readonly image3D u_input;
 layout(r32f, binding = 1) uniform writeonly image3D u_output;
-layout(AVS_FINAL_FORMAT, binding = 2) uniform writeonly image3D u_final; // pass 4
 uniform int u_pass;
 uniform ivec3 u_dimensions;  // of u_input (pass 0: of the data)
 uniform int u_targetLength;  // points of the target grid along this pass's axis
 uniform int u_halfWidth;     // k along this pass's axis
 uniform float u_inverseCount; // 1 / prod(2 k_a + 1), applied in the last pass
 
-// u_scalars (passes 0 and 4) is declared by the classification.
-uniform sampler3D u_averaged; // pass 4: the result of pass 3, on the target grid
-uniform vec3 u_target;        // pass 4: the target grid's dimensions
+// u_scalars (pass 0) is declared by the classification.
 // Pass 0: Classify(s), the ray caster's classification (avs_classify.glsl), and 0 outside
 // the clipping planes and cropping (avs_clip.glsl).
 //AVS::Classify::Dec
@@ -40,7 +34,7 @@ void Store(ivec3 v, double sum)
 
 void main()
 {
-  // Passes 0 and 4 work voxel by voxel, one invocation per column along z: on a software
+  // Pass 0 works voxel by voxel, one invocation per column along z: on a software
   // rasterizer one invocation per voxel costs about twice as much (measured with llvmpipe).
   if (u_pass == 0)
   {
@@ -53,27 +47,6 @@ void main()
       vec3 coordinate = (vec3(v) + 0.5) / vec3(u_dimensions);
       imageStore(u_output, v,
         vec4(Classify(texelFetch(u_scalars, v, 0), coordinate).a * ClipInside(vec3(v), true)));
-    }
-    return;
-  }
-  if (u_pass == 4)
-  {
-    ivec2 xy = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(xy, u_dimensions.xy)))
-      return;
-    // The voxel's position on the target grid (same box).
-    vec3 scale = max((u_target - 1.0) / max(vec3(u_dimensions) - 1.0, vec3(1.0)), vec3(0.0));
-    for (int z = 0; z < u_dimensions.z; ++z)
-    {
-      ivec3 v = ivec3(xy, z);
-      float averaged = textureLod(u_averaged, (vec3(v) * scale + 0.5) / u_target, 0.0).r;
-#ifdef AVS_AVERAGED_TEXTURE
-      imageStore(u_final, v, vec4(averaged));
-#else
-      vec4 texel = texelFetch(u_scalars, v, 0);
-      texel[AVS_AVERAGED_CHANNEL] = averaged;
-      imageStore(u_final, v, texel);
-#endif
     }
     return;
   }

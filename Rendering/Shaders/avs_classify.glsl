@@ -17,7 +17,10 @@
 // use row 0's; the texture's clamp to the edge clamps beyond the range), and u_rowY[row] is its
 // layer. Shared by the ray caster and the
 // averaged-extinction pass, which insert it at //AVS::Classify::Dec. Classify(raw, coordinate)
-// takes the volume texel `raw` fetched at texture coordinate `coordinate`.
+// takes the volume texel `raw` fetched at texture coordinate `coordinate`. The texel's channels
+// are data values once mapped by u_valueScale and u_valueShift (DataValues): 8- and 16-bit
+// scalars are stored normalized (vtkAVSTextureUpload.h), and the map is affine, so mapping the
+// interpolated texel equals interpolating the data values, as the CPU reference does.
 #ifndef AVS_VOLUME_TEXTURE
 #define AVS_VOLUME_TEXTURE u_scalars
 #endif
@@ -31,6 +34,8 @@ uniform float u_unitDistance[4];
 uniform float u_weight[4];
 uniform vec3 u_gradientScale; // mean spacing / (2 spacing) per index axis
 uniform vec3 u_voxelStep;     // one voxel in texture coordinates per axis
+uniform vec4 u_valueScale;    // texel -> data value per channel: texel * scale + shift
+uniform vec4 u_valueShift;
 #if AVS_VALIDITY == 2
 uniform sampler3D u_validity;
 #endif
@@ -64,13 +69,19 @@ float Validity(vec4 raw, vec3 coordinate)
 #endif
 }
 
-// The components of a texel, divided by its validity.
+// The data values of a volume texel (the validity's channel, with float texels, unchanged).
+vec4 DataValues(vec4 raw)
+{
+  return raw * u_valueScale + u_valueShift;
+}
+
+// The components of a texel as data values, divided by its validity.
 vec4 Components(vec4 raw, float valid)
 {
 #if AVS_VALIDITY > 0
-  return valid > 0.0 ? raw / valid : vec4(0.0);
+  return valid > 0.0 ? DataValues(raw) / valid : vec4(0.0);
 #else
-  return raw;
+  return DataValues(raw);
 #endif
 }
 
