@@ -90,7 +90,16 @@ bool vtkAVSVolumeMapper::PrepareScene(vtkVolume* volume)
   vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
   if (!input)
   {
-    vtkErrorMacro("Cannot render: no input image data.");
+    if (vtkDataSet* other = this->GetInput())
+    {
+      vtkErrorMacro("Cannot render: no input image data (the input is a "
+        << other->GetClassName()
+        << "; these mappers take vtkImageData: resample it, e.g. with vtkResampleToImage).");
+    }
+    else
+    {
+      vtkErrorMacro("Cannot render: no input image data.");
+    }
     return false;
   }
   // The array to draw, as vtkGPUVolumeRayCastMapper selects it.

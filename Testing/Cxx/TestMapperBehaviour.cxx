@@ -16,6 +16,7 @@
 #include "vtkLightCollection.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
+#include "vtkRectilinearGrid.h"
 #include "vtkSphereSource.h"
 
 #include <cstdio>
@@ -420,6 +421,31 @@ int main(int argc, char* argv[])
       };
       vtkNew<vtkImageData> empty;
       expectError(empty, "empty");
+      // A rectilinear grid (VTK's mapper renders one): an error naming it, nothing drawn.
+      {
+        vtkNew<vtkRectilinearGrid> grid;
+        grid->SetDimensions(8, 8, 8);
+        vtkNew<vtkDoubleArray> coordinates;
+        for (int i = 0; i < 8; ++i)
+        {
+          coordinates->InsertNextValue(0.01 * i * i);
+        }
+        grid->SetXCoordinates(coordinates);
+        grid->SetYCoordinates(coordinates);
+        grid->SetZCoordinates(coordinates);
+        vtkNew<vtkFloatArray> values;
+        values->SetNumberOfTuples(grid->GetNumberOfPoints());
+        values->Fill(500.0);
+        grid->GetPointData()->SetScalars(values);
+        errors->Clear();
+        mapper->SetInputData(grid);
+        const int frames = mapper->GetNumberOfRenderedFrames();
+        const auto picture = scene.Render();
+        AVS_CHECK(errors->Errors > 0);
+        AVS_CHECK(errors->LastError.find("the input is a vtkRectilinearGrid") != std::string::npos);
+        AVS_CHECK(Brightness(picture) == 0.0);
+        AVS_CHECK(mapper->GetNumberOfRenderedFrames() == frames);
+      }
       auto noScalars = MakeTestVolume(8);
       noScalars->GetPointData()->RemoveArray(0);
       expectError(noScalars, "no point scalars");
