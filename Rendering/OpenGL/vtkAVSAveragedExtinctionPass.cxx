@@ -48,16 +48,17 @@ bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
     error = "the averaged-extinction compute shader did not compile (see the log above)";
     return false;
   }
-  // Pass 0 classifies into Scratch[0] (data grid); the x pass shrinks x to the light grid (into
-  // Scratch[1]), the y pass y (into Scratch[2]), the z pass z (into AveragedExtinction), which
-  // the light-volume pass and the ray caster sample.
+  // The x pass classifies the scalars as it sums them and shrinks x to the light grid (into
+  // Scratch[0]), the y pass y (into Scratch[1]), the z pass z (into AveragedExtinction), which
+  // the light-volume pass and the ray caster sample. (A classification pass of its own would
+  // need sigma_t on the data grid, 4 bytes per voxel.)
   const std::array<int, 3>& d = dimensions;
   const std::array<int, 3>& l = lightDimensions;
   const std::array<int, 3> shapes[4] = { d, { l[0], d[1], d[2] }, { l[0], l[1], d[2] }, l };
   vtkSmartPointer<vtkTextureObject>* images[4] = {
-    &textures.Scratch[0], &textures.Scratch[1], &textures.Scratch[2], &textures.AveragedExtinction
+    nullptr, &textures.Scratch[0], &textures.Scratch[1], &textures.AveragedExtinction
   };
-  for (int i = 0; i < 4; ++i)
+  for (int i = 1; i < 4; ++i)
   {
     if (!textures.UploadGrid(*images[i], shapes[i], 1, nullptr, error))
     {
@@ -77,31 +78,21 @@ bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
   glUniform1i(location("u_scalars"), textures.Scalars->GetTextureUnit());
   textures.Classification.Bind(program);
   vtkAVSShaderOptions::SetClipUniforms(program, clip);
-  for (int pass = 0; pass < 4; ++pass)
+  for (int pass = 1; pass < 4; ++pass)
   {
-    // Pass p reads images[p - 1] (pass 0: the scalars) and writes images[p].
-    const std::array<int, 3>& in = pass == 0 ? d : shapes[pass - 1];
-    if (pass > 0)
-    {
-      glBindImageTexture(0, (*images[pass - 1])->GetHandle(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
-    }
+    // Pass p reads images[p - 1] (pass 1: the scalars, classified) and writes images[p].
+    const std::array<int, 3>& in = shapes[pass - 1];
+    glBindImageTexture(
+      0, pass > 1 ? (*images[pass - 1])->GetHandle() : 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
     glBindImageTexture(1, (*images[pass])->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
     glUniform1i(location("u_pass"), pass);
     glUniform3i(location("u_dimensions"), in[0], in[1], in[2]);
-    if (pass == 0)
-    {
-      glDispatchCompute(
-        static_cast<GLuint>((d[0] + 7) / 8), static_cast<GLuint>((d[1] + 7) / 8), 1);
-    }
-    else
-    {
-      const int axis = pass - 1;
-      const int u = axis == 0 ? in[1] : in[0];
-      const int v = axis == 2 ? in[1] : in[2];
-      glUniform1i(location("u_halfWidth"), halfWidths[axis]);
-      glUniform1i(location("u_targetLength"), l[axis]);
-      glDispatchCompute(static_cast<GLuint>((u + 7) / 8), static_cast<GLuint>((v + 7) / 8), 1);
-    }
+    const int axis = pass - 1;
+    const int u = axis == 0 ? in[1] : in[0];
+    const int v = axis == 2 ? in[1] : in[2];
+    glUniform1i(location("u_halfWidth"), halfWidths[axis]);
+    glUniform1i(location("u_targetLength"), l[axis]);
+    glDispatchCompute(static_cast<GLuint>((u + 7) / 8), static_cast<GLuint>((v + 7) / 8), 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   }
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
@@ -109,9 +100,8 @@ bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
   glUseProgram(0);
   textures.Scalars->Deactivate();
   textures.Classification.Unbind();
-  // Not kept for the next rebuild: sigma_t on the data grid takes 4 bytes per voxel, more than
-  // the scalars (issue 16). Allocating them again costs on a software rasterizer: an opacity
-  // change on the 256^3 nebula with 4 lights took 1.54 s of CPU with them kept, 1.8 s without.
+  // Not kept for the next rebuild (issue 16: the memory of a volume at rest is the scalars and
+  // the light grid's volumes); allocating them again costs a little on a software rasterizer.
   textures.ReleaseScratch();
   if (const GLenum status = glGetError())
   {

@@ -25,8 +25,7 @@ void vtkAVSVolumeTextures::ReleaseGraphicsResources(vtkWindow* window)
          this->LightVolumes[0].Get(),
          this->LightVolumes[1].Get(),
          this->Scratch[0].Get(),
-         this->Scratch[1].Get(),
-         this->Scratch[2].Get() })
+         this->Scratch[1].Get() })
   {
     if (t && window)
     {
@@ -261,8 +260,7 @@ std::vector<vtkTextureObject*> vtkAVSVolumeTextures::VolumeTextures() const
     this->LightVolumes[0],
     this->LightVolumes[1],
     this->Scratch[0],
-    this->Scratch[1],
-    this->Scratch[2] };
+    this->Scratch[1] };
   for (vtkTextureObject* t : this->Classification.VolumeTextures())
   {
     held.push_back(t); // last: UploadClassification leaves them to the classification

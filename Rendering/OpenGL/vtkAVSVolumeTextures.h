@@ -109,10 +109,9 @@ public:
   /// The averaged extinction on the light grid, which the light-volume pass and the ray caster
   /// sample.
   vtkSmartPointer<vtkTextureObject> AveragedExtinction;
-  /// The averaged-extinction pass's intermediate grids (sigma_t on the data grid, then reduced
-  /// along x and along y), released after the pass (ReleaseScratch): sigma_t alone takes 4
-  /// bytes per voxel, more than the scalars.
-  vtkSmartPointer<vtkTextureObject> Scratch[3];
+  /// The averaged-extinction pass's intermediate grids (sigma_t summed along x, then along y,
+  /// each shrunk to the light grid on its axis), released after the pass (ReleaseScratch).
+  vtkSmartPointer<vtkTextureObject> Scratch[2];
   /// The table slice: log(F(tau) exp(2 tau)) on its tau nodes (the light-volume pass's uniform
   /// array), its size (theta, tau) and its longest tau.
   std::vector<float> LogGain;

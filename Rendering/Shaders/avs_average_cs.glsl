@@ -3,8 +3,8 @@
 // Rendering/Core/AveragedExtinction.cxx, AverageExtinctionOn, which the tests hold this pass
 // against), stored on the light volumes' grid (the data's grid or a coarser one over the same
 // box).
-// Pass 0 classifies the scalars into sigma_t on the data grid. Passes 1-3 take the box sums
-// along x, y and z: one invocation per line, a running window sum in double precision (the
+// Passes 1-3 take the box sums of sigma_t along x, y and z (pass 1 classifies the scalars as it
+// reads them, so sigma_t on the data grid is never stored): one invocation per line, a running window sum in double precision (the
 // per-line summed-area table) over the line's voxels, written at the target grid's points along
 // that axis by linear interpolation between the two voxels around each (so each pass shrinks
 // its axis to the target's size, and the three together give the data-grid average
@@ -16,14 +16,14 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(r32f, binding = 0) uniform readonly image3D u_input;
 layout(r32f, binding = 1) uniform writeonly image3D u_output;
 uniform int u_pass;
-uniform ivec3 u_dimensions;  // of u_input (pass 0: of the data)
+uniform ivec3 u_dimensions;  // of u_input (pass 1: of the data)
 uniform int u_targetLength;  // points of the target grid along this pass's axis
 uniform int u_halfWidth;     // k along this pass's axis
 uniform float u_inverseCount; // 1 / prod(2 k_a + 1), applied in the last pass
 
-// u_scalars (pass 0) is declared by the classification.
-// Pass 0: Classify(s), the ray caster's classification (avs_classify.glsl), and 0 outside
-// the clipping planes and cropping (avs_clip.glsl).
+// u_scalars (pass 1) is declared by the classification.
+// Pass 1's input: Classify(s), the ray caster's classification (avs_classify.glsl), and 0
+// outside the clipping planes and cropping (avs_clip.glsl).
 //AVS::Classify::Dec
 //AVS::Clip::Dec
 
@@ -32,24 +32,19 @@ void Store(ivec3 v, double sum)
   imageStore(u_output, v, vec4(u_pass == 3 ? float(sum) * u_inverseCount : float(sum)));
 }
 
+// sigma_t at voxel v: classified from the scalars in pass 1, the previous pass's result after.
+float Input(ivec3 v)
+{
+  if (u_pass == 1)
+  {
+    vec3 coordinate = (vec3(v) + 0.5) / vec3(u_dimensions);
+    return Classify(texelFetch(u_scalars, v, 0), coordinate).a * ClipInside(vec3(v), true);
+  }
+  return imageLoad(u_input, v).r;
+}
+
 void main()
 {
-  // Pass 0 works voxel by voxel, one invocation per column along z: on a software
-  // rasterizer one invocation per voxel costs about twice as much (measured with llvmpipe).
-  if (u_pass == 0)
-  {
-    ivec2 xy = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(xy, u_dimensions.xy)))
-      return;
-    for (int z = 0; z < u_dimensions.z; ++z)
-    {
-      ivec3 v = ivec3(xy, z);
-      vec3 coordinate = (vec3(v) + 0.5) / vec3(u_dimensions);
-      imageStore(u_output, v,
-        vec4(Classify(texelFetch(u_scalars, v, 0), coordinate).a * ClipInside(vec3(v), true)));
-    }
-    return;
-  }
   // The line: this pass's axis varies, the two others come from the invocation.
   int axis = u_pass - 1;
   ivec2 other = ivec2(gl_GlobalInvocationID.xy);
@@ -67,7 +62,7 @@ void main()
   double sum = 0.0;
   for (int j = 0; j <= min(k, n - 1); ++j)
   {
-    sum += double(imageLoad(u_input, base + j * step).r);
+    sum += double(Input(base + j * step));
   }
   double previous = sum; // the window sum at voxel i - 1
   int o = 0;
@@ -88,8 +83,8 @@ void main()
     int add = i + k + 1;
     int remove = i - k;
     if (add < n)
-      sum += double(imageLoad(u_input, base + add * step).r);
+      sum += double(Input(base + add * step));
     if (remove >= 0)
-      sum -= double(imageLoad(u_input, base + remove * step).r);
+      sum -= double(Input(base + remove * step));
   }
 }
