@@ -422,8 +422,14 @@ int main(int argc, char* argv[])
       ea.BytesPerVoxel / vtk.BytesPerVoxel,
       1.1);
     Check(as4.BytesPerVoxel <= 2.5 * vtk.BytesPerVoxel,
-      std::string("as4 gpu bytes/voxel <= 2.5x vtk's ea, ") + typeNames[t],
+      std::string("as4 gpu bytes/voxel held <= 2.5x vtk's ea, ") + typeNames[t],
       as4.BytesPerVoxel / vtk.BytesPerVoxel,
+      2.5);
+    // What it allocates at once during a rebuild (the averaged-extinction pass's scratch grids
+    // beside the rest): the stricter reading of "allocates".
+    Check(as4.PeakBytesPerVoxel <= 2.5 * vtk.BytesPerVoxel,
+      std::string("as4 gpu bytes/voxel at the rebuild's peak <= 2.5x vtk's ea, ") + typeNames[t],
+      as4.PeakBytesPerVoxel / vtk.BytesPerVoxel,
       2.5);
     Check(ea.PeakMiB <= 1.1 * vtk.PeakMiB,
       std::string("ea peak above baseline <= 1.1x vtk's, ") + typeNames[t],

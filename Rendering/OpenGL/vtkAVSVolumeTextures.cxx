@@ -249,6 +249,7 @@ bool vtkAVSVolumeTextures::UploadClassification(const avs::VolumeScene& scene, s
     return false;
   }
   this->Classification.SetValueMap(this->ScalarFormat.Scale, this->ScalarFormat.Shift);
+  this->NotePeak(); // the mask and validity textures count too
   return true;
 }
 
