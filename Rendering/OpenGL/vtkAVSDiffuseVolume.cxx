@@ -2,7 +2,9 @@
 
 #include "DiffuseFluence.h"
 #include "vtkAVSRenderPasses.h"
+#include "vtkAVSShaderAssembly.h"
 #include "vtkAVSShaders.h"
+#include "vtkAVSTextureUpload.h"
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -51,74 +53,13 @@ bool vtkAVSDiffuseVolume::Allocate(vtkOpenGLRenderWindow* window,
   const float* data,
   std::string& error)
 {
-  if (texture && !data && texture->GetWidth() == static_cast<unsigned int>(d[0]) &&
-    texture->GetHeight() == static_cast<unsigned int>(d[1]) &&
-    texture->GetDepth() == static_cast<unsigned int>(d[2]))
+  if (!vtkAVSTextureUpload::UploadFloats(window, texture, d, 4, data, GL_RGBA32F, {}, error))
   {
-    return true; // written on the GPU: the storage is reused
-  }
-  if (texture)
-  {
-    texture->ReleaseGraphicsResources(window);
-  }
-  texture = vtkSmartPointer<vtkTextureObject>::New();
-  texture->SetContext(window);
-  texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->SetWrapR(vtkTextureObject::ClampToEdge);
-  texture->SetMinificationFilter(vtkTextureObject::Linear);
-  texture->SetMagnificationFilter(vtkTextureObject::Linear);
-  texture->SetInternalFormat(GL_RGBA32F);
-  vtkAVSRenderPasses::DiscardErrors();
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  if (!texture->Create3DFromRaw(static_cast<unsigned int>(d[0]),
-        static_cast<unsigned int>(d[1]),
-        static_cast<unsigned int>(d[2]),
-        4,
-        VTK_FLOAT,
-        const_cast<float*>(data)) ||
-    glGetError() != GL_NO_ERROR)
-  {
-    error = "the GPU could not allocate the diffuse-fluence texture (" + std::to_string(d[0]) +
-      " x " + std::to_string(d[1]) + " x " + std::to_string(d[2]) + ")";
-    texture->ReleaseGraphicsResources(window);
-    texture = nullptr;
+    error = "the diffuse-fluence texture: " + error;
     return false;
   }
   return true;
 }
-
-namespace
-{
-unsigned int BuildProgram(const std::string& source)
-{
-  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-  const char* text = source.c_str();
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok)
-  {
-    char log[2048] = {};
-    glGetShaderInfoLog(shader, sizeof(log) - 1, nullptr, log);
-    vtkGenericWarningMacro("The diffusion compute shader did not compile. " << log);
-    glDeleteShader(shader);
-    return 0;
-  }
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, shader);
-  glLinkProgram(program);
-  glDeleteShader(shader);
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok)
-  {
-    glDeleteProgram(program);
-    return 0;
-  }
-  return program;
-}
-} // namespace
 
 bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   const avs::GridGeometry& grid,
@@ -152,14 +93,11 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
     (spot ? "#define AVS_SPOT_LIGHTS\n" : "");
   if (!this->Program || defines != this->ProgramDefines)
   {
-    if (this->Program)
-    {
-      glDeleteProgram(this->Program);
-    }
+    vtkAVSShaderAssembly::ReleaseComputeProgram(this->Program, true);
     std::string source = avs_diffusion_cs;
     const std::size_t line = source.find('\n') + 1; // after #version
     source.insert(line, defines + avs_lights + "\n");
-    this->Program = BuildProgram(source);
+    this->Program = vtkAVSShaderAssembly::BuildComputeProgram(source.c_str(), "diffusion");
     this->ProgramDefines = this->Program ? defines : std::string();
     if (!this->Program)
     {
@@ -307,11 +245,7 @@ void vtkAVSDiffuseVolume::ReleaseGraphicsResources(vtkWindow* window)
     *t = nullptr;
   }
   // Without a window its context took the program with it: the name is only forgotten.
-  if (this->Program && window)
-  {
-    glDeleteProgram(this->Program);
-  }
-  this->Program = 0;
+  vtkAVSShaderAssembly::ReleaseComputeProgram(this->Program, window != nullptr);
   this->ProgramDefines.clear();
   this->Dimensions = { 0, 0, 0 };
 }

@@ -58,8 +58,9 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  /// An RGBA float texture of dimensions d, undefined (for the GPU solve).
-  bool Allocate(vtkOpenGLRenderWindow* window,
+  /// An RGBA float texture of dimensions d, from `data` (null: undefined, for the GPU solve),
+  /// through vtkAVSTextureUpload.
+  static bool Allocate(vtkOpenGLRenderWindow* window,
     vtkSmartPointer<vtkTextureObject>& texture,
     const std::array<int, 3>& d,
     const float* data,

@@ -156,6 +156,11 @@ bool vtkAVSRayCaster::SupportsComputeShaders()
   // current one when first needed (ComputeAveragedExtinction). Here: that it compiles.
   const bool averaged = this->AveragedExtinctionPass.Build(vtkAVSClassification::Layout()) != 0;
   this->ComputeSupport = lightVolume && occlusion && averaged ? 1 : 0;
+  if (!this->ComputeSupport)
+  {
+    vtkGenericWarningMacro("A compute shader did not build (see above): the precomputation runs "
+                           "on the CPU.");
+  }
   return this->ComputeSupport == 1;
 }
 

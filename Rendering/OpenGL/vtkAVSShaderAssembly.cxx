@@ -154,10 +154,7 @@ unsigned int vtkAVSShaderAssembly::BuildComputeProgram(const char* source, const
   {
     char log[2048] = {};
     glGetShaderInfoLog(shader, sizeof(log) - 1, nullptr, log);
-    vtkGenericWarningMacro("The " << what
-                                  << " compute shader did not compile; the precomputation runs "
-                                     "on the CPU. "
-                                  << log);
+    vtkGenericWarningMacro("The " << what << " compute shader did not compile. " << log);
     glDeleteShader(shader);
     return 0;
   }
