@@ -28,6 +28,7 @@
 // preset); --clipping-nothing the same tests with planes outside the volume and every cropping
 // region kept (the picture of a run without clipping), so that a run with it against one
 // without says what the clipping tests cost per frame.
+#include "BenchScene.h"
 #include "ProceduralVolume.h"
 
 #include "vtkAmbientOcclusionVolumeMapper.h"
@@ -377,43 +378,8 @@ int main(int argc, char* argv[])
   }
 
   vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(0.0, 0.25, 0.35, 0.9);
-  color->AddRGBPoint(0.5, 0.9, 0.5, 0.4);
-  color->AddRGBPoint(1.0, 1.0, 0.95, 0.8);
-  b.Opacity->AddPoint(0.0, 0.0);
-  b.Opacity->AddPoint(0.05, 0.0);
-  b.Opacity->AddPoint(0.5, 0.25);
-  b.Opacity->AddPoint(1.0, 0.6);
-  b.Property->SetColor(color);
-  b.Property->SetScalarOpacity(b.Opacity);
-  b.Property->SetScalarOpacityUnitDistance(2.0 / 48.0);
-  b.Property->SetInterpolationTypeToLinear();
-  b.Property->ShadeOff();
-
-  // Four lights: a directional light, a point light at the centre, two more directional.
-  const double directions[3][3] = { { -1, 1, 0.5 }, { 1, 0.2, -0.3 }, { 0.1, -1, 0.4 } };
-  for (int i = 0; i < 4; ++i)
-  {
-    auto light = vtkSmartPointer<vtkLight>::New();
-    light->SetLightTypeToSceneLight();
-    if (i == 1)
-    {
-      light->SetPositional(true);
-      light->SetConeAngle(180);
-      light->SetPosition(0, 0, 0);
-      light->SetFocalPoint(0, 0, -1);
-      light->SetIntensity(0.8);
-    }
-    else
-    {
-      const double* d = directions[i == 0 ? 0 : i - 1];
-      light->SetPositional(false);
-      light->SetPosition(d[0], d[1], d[2]);
-      light->SetFocalPoint(0, 0, 0);
-      light->SetIntensity(0.4);
-    }
-    b.Lights.push_back(light);
-  }
+  ConfigureBenchProperty(b.Property, color, b.Opacity, 1.0);
+  b.Lights = MakeBenchLights();
 
   b.Window->SetSize(size, size);
   b.Window->SetMultiSamples(0);

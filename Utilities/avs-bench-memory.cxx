@@ -30,6 +30,7 @@
 // Targets (issue 16): ours EA <= 1.1x VTK's bytes per voxel and peak above baseline; ambient
 // scattering with 4 lights <= 2.5x VTK's (EA) in both; the 8-bit volume renders with ambient
 // scattering within 1 GB (meant at --voxels 512).
+#include "BenchScene.h"
 #include "ProceduralVolume.h"
 
 #include "vtkAmbientOcclusionVolumeMapper.h"
@@ -142,40 +143,11 @@ Result RunOne(const std::string& mapperName, vtkImageData* volume, int size, int
   vtkNew<vtkColorTransferFunction> color;
   vtkNew<vtkPiecewiseFunction> opacity;
   const double top = volume->GetPointData()->GetScalars()->GetDataTypeMax();
-  color->AddRGBPoint(0.0, 0.25, 0.35, 0.9);
-  color->AddRGBPoint(0.5 * top, 0.9, 0.5, 0.4);
-  color->AddRGBPoint(top, 1.0, 0.95, 0.8);
-  opacity->AddPoint(0.0, 0.0);
-  opacity->AddPoint(0.05 * top, 0.0);
-  opacity->AddPoint(0.5 * top, 0.25);
-  opacity->AddPoint(top, 0.6);
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(2.0 / 48.0);
-  property->SetInterpolationTypeToLinear();
-
-  const double directions[3][3] = { { -1, 1, 0.5 }, { 1, 0.2, -0.3 }, { 0.1, -1, 0.4 } };
-  const int lights = mapperName == "as4" ? 4 : 1;
-  for (int i = 0; i < lights; ++i)
+  ConfigureBenchProperty(property, color, opacity, top);
+  const std::vector<vtkSmartPointer<vtkLight>> lights = MakeBenchLights();
+  for (int i = 0; i < (mapperName == "as4" ? 4 : 1); ++i)
   {
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToSceneLight();
-    if (i == 1)
-    {
-      light->SetPositional(true);
-      light->SetConeAngle(180);
-      light->SetPosition(0, 0, 0);
-      light->SetFocalPoint(0, 0, -1);
-      light->SetIntensity(0.8);
-    }
-    else
-    {
-      const double* d = directions[i == 0 ? 0 : i - 1];
-      light->SetPosition(d[0], d[1], d[2]);
-      light->SetFocalPoint(0, 0, 0);
-      light->SetIntensity(0.4);
-    }
-    renderer->AddLight(light);
+    renderer->AddLight(lights[i]);
   }
 
   vtkSmartPointer<vtkVolumeMapper> mapper;
