@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <type_traits>
 
 namespace
 {
@@ -19,11 +20,47 @@ constexpr double MaximumCoordinate = 1e30;
 constexpr double MaximumSamplesPerAxis = 1 << 23; // half-spacing samples: 2^24 per axis
 
 template<typename T>
-void CopyComponent(const T* in, vtkIdType n, int components, int c, float* out)
+void CopyComponent(const T* in,
+  vtkIdType begin,
+  vtkIdType end,
+  int components,
+  int c,
+  float lo,
+  float hi,
+  float* out)
 {
-  for (vtkIdType i = 0; i < n; ++i)
+  for (vtkIdType i = begin; i < end; ++i)
   {
-    out[i] = static_cast<float>(in[i * components + c]);
+    float v = static_cast<float>(in[i * components + c]);
+    if constexpr (std::is_floating_point_v<T>)
+    {
+      v = std::isinf(v) ? (v > 0 ? hi : lo) : v;
+    }
+    *out++ = v;
+  }
+}
+
+// Counts the tuples with a NaN component and the infinite values (as floats).
+template<typename T>
+void CountNonFinite(const T* in, vtkIdType n, int components, vtkIdType& nan, vtkIdType& inf)
+{
+  if constexpr (std::is_floating_point_v<T>)
+  {
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      bool isNaN = false;
+      for (int c = 0; c < components; ++c)
+      {
+        const float v = static_cast<float>(in[i * components + c]);
+        isNaN = isNaN || std::isnan(v);
+        inf += std::isinf(v) ? 1 : 0;
+      }
+      nan += isNaN ? 1 : 0;
+    }
+  }
+  else
+  {
+    (void)in, (void)n, (void)components, (void)nan, (void)inf;
   }
 }
 
@@ -215,7 +252,8 @@ bool vtkAVSDataTranslator::ToVolume(vtkImageData* image,
   const Selection& selection,
   Volume& volume,
   std::string& error,
-  std::string& warning)
+  std::string& warning,
+  bool deferCopy)
 {
   volume = Volume();
   warning.clear();
@@ -277,20 +315,6 @@ bool vtkAVSDataTranslator::ToVolume(vtkImageData* image,
   volume.ScalarType = scalars->GetDataType();
   for (int c = 0; c < components; ++c)
   {
-    avs::Grid grid(geometry);
-    switch (scalars->GetDataType())
-    {
-      vtkTemplateMacro(CopyComponent(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)),
-        n,
-        components,
-        c,
-        grid.Values.data()));
-      default:
-        for (vtkIdType i = 0; i < n; ++i)
-        {
-          grid.Values[i] = static_cast<float>(scalars->GetComponent(i, c));
-        }
-    }
     double range[2];
     scalars->GetFiniteRange(range, c);
     if (!(range[0] <= range[1]) || !std::isfinite(range[0]) || !std::isfinite(range[1]))
@@ -311,40 +335,59 @@ bool vtkAVSDataTranslator::ToVolume(vtkImageData* image,
       return false;
     }
     volume.Ranges.push_back({ range[0], range[1] });
-    volume.Components.push_back(std::move(grid));
   }
-  // NaN voxels are empty space: every component 0 and validity 0 there; infinities are clamped
-  // into their component's finite range.
-  std::vector<unsigned char> nan;
-  for (int c = 0; c < components; ++c)
+  // NaN and infinities, counted on the array itself (as floats, which the renderers use).
+  const bool standard = scalars->HasStandardMemoryLayout() != 0;
+  vtkIdType nanTuples = 0;
+  if (standard)
   {
-    std::vector<float>& values = volume.Components[c].Values;
-    const float lo = static_cast<float>(volume.Ranges[c][0]);
-    const float hi = static_cast<float>(volume.Ranges[c][1]);
-    for (vtkIdType i = 0; i < n; ++i)
+    switch (scalars->GetDataType())
     {
-      const float v = values[i];
-      if (std::isnan(v))
-      {
-        if (nan.empty())
-        {
-          nan.assign(static_cast<std::size_t>(n), 0);
-        }
-        nan[i] = 1;
-      }
-      else if (std::isinf(v))
-      {
-        values[i] = v > 0 ? hi : lo;
-        ++volume.Infinities;
-      }
+      vtkTemplateMacro(CountNonFinite(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)),
+        n,
+        components,
+        nanTuples,
+        volume.Infinities));
+      default:
+        break;
     }
   }
-  if (!nan.empty())
+  else
+  {
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      bool isNaN = false;
+      for (int c = 0; c < components; ++c)
+      {
+        const float v = static_cast<float>(scalars->GetComponent(i, c));
+        isNaN = isNaN || std::isnan(v);
+        volume.Infinities += std::isinf(v) ? 1 : 0;
+      }
+      nanTuples += isNaN ? 1 : 0;
+    }
+  }
+  for (int c = 0; c < components; ++c)
+  {
+    volume.Components.emplace_back();
+    volume.Components.back().Geometry = geometry;
+  }
+  volume.Deferred = true;
+  if (!deferCopy || !standard || nanTuples > 0)
+  {
+    Materialize(volume);
+  }
+  // NaN voxels are empty space: every component 0 and validity 0 there.
+  if (nanTuples > 0)
   {
     volume.Validity = avs::Grid(geometry, 1.0f);
     for (vtkIdType i = 0; i < n; ++i)
     {
-      if (nan[i])
+      bool isNaN = false;
+      for (const auto& grid : volume.Components)
+      {
+        isNaN = isNaN || std::isnan(grid.Values[i]);
+      }
+      if (isNaN)
       {
         volume.Validity.Values[i] = 0.0f;
         for (auto& grid : volume.Components)
@@ -377,6 +420,59 @@ bool vtkAVSDataTranslator::ToVolume(vtkImageData* image,
   return true;
 }
 
+void vtkAVSDataTranslator::CopyValues(vtkDataArray* array,
+  int c,
+  const std::array<double, 2>& range,
+  vtkIdType begin,
+  vtkIdType end,
+  float* out)
+{
+  const int components = array->GetNumberOfComponents();
+  const float lo = static_cast<float>(range[0]), hi = static_cast<float>(range[1]);
+  if (array->HasStandardMemoryLayout())
+  {
+    switch (array->GetDataType())
+    {
+      vtkTemplateMacro(CopyComponent(static_cast<const VTK_TT*>(array->GetVoidPointer(0)),
+        begin,
+        end,
+        components,
+        c,
+        lo,
+        hi,
+        out));
+      default:
+        break;
+    }
+    return;
+  }
+  for (vtkIdType i = begin; i < end; ++i)
+  {
+    const float v = static_cast<float>(array->GetComponent(i, c));
+    *out++ = std::isinf(v) ? (v > 0 ? hi : lo) : v;
+  }
+}
+
+void vtkAVSDataTranslator::Materialize(Volume& volume)
+{
+  if (!volume.Deferred)
+  {
+    return;
+  }
+  for (std::size_t c = 0; c < volume.Components.size(); ++c)
+  {
+    avs::Grid& grid = volume.Components[c];
+    grid.Values.assign(grid.Geometry.NumberOfPoints(), 0.0f);
+    CopyValues(volume.Array,
+      static_cast<int>(c),
+      volume.Ranges[c],
+      0,
+      static_cast<vtkIdType>(grid.Values.size()),
+      grid.Values.data());
+  }
+  volume.Deferred = false;
+}
+
 bool vtkAVSDataTranslator::ToMask(vtkImageData* mask,
   const avs::GridGeometry& volume,
   avs::Grid& out,
@@ -406,21 +502,10 @@ bool vtkAVSDataTranslator::ToMask(vtkImageData* mask,
     return false;
   }
   out = avs::Grid(volume);
-  const vtkIdType count = scalars->GetNumberOfTuples();
-  const int components = scalars->GetNumberOfComponents();
-  switch (scalars->GetDataType())
-  {
-    vtkTemplateMacro(CopyComponent(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)),
-      count,
-      components,
-      0,
-      out.Values.data()));
-    default:
-      for (vtkIdType i = 0; i < count; ++i)
-      {
-        out.Values[i] = static_cast<float>(scalars->GetComponent(i, 0));
-      }
-  }
+  // The mask's values as they are (an infinite range clamps nothing).
+  const double unbounded = std::numeric_limits<double>::infinity();
+  CopyValues(
+    scalars, 0, { -unbounded, unbounded }, 0, scalars->GetNumberOfTuples(), out.Values.data());
   for (float& value : out.Values)
   {
     if (std::isnan(value))

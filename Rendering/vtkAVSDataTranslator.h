@@ -58,6 +58,10 @@ public:
     bool CellData = false;         ///< samples at the cell centres
     int ScalarType = 0;            ///< the array's VTK type
     vtkDataArray* Array = nullptr; ///< the array that was converted (not owned)
+    /// The component grids have their geometry but no values: ToVolume was asked not to copy
+    /// (deferCopy) and the array allows it (no NaN, the standard memory layout). CopyValues
+    /// reads the values from Array when they are needed, a slab at a time.
+    bool Deferred = false;
   };
 
   /// The selected array of `image`, or nullptr with the reason in `error`. `cellData` says
@@ -75,11 +79,26 @@ public:
   /// times as long as its smallest spacing (rays of over 2^24 samples), finite values beyond
   /// the single-precision range. `warning` is set (else left
   /// empty) when the data has NaN or infinite values: their counts, once per conversion.
+  /// With `deferCopy` the values are not copied where they need not be (Volume::Deferred): a
+  /// GPU mapper converts them while it uploads them, so that the process never holds a float
+  /// copy of the whole volume.
   static bool ToVolume(vtkImageData* image,
     const Selection& selection,
     Volume& volume,
     std::string& error,
-    std::string& warning);
+    std::string& warning,
+    bool deferCopy = false);
+
+  /// The values of component `c` of the tuples [begin, end) of `array` as floats in `out`,
+  /// infinities clamped into `range` (the component's finite range), as ToVolume converts them.
+  static void CopyValues(vtkDataArray* array,
+    int c,
+    const std::array<double, 2>& range,
+    vtkIdType begin,
+    vtkIdType end,
+    float* out);
+  /// Copies the values of a deferred volume into its component grids (Deferred becomes false).
+  static void Materialize(Volume& volume);
 
   /// The mask of a volume (vtkGPUVolumeRayCastMapper::SetMaskInput): its point scalars, else
   /// its cell scalars, first component, on the volume's samples. VTK's mapper reads the mask

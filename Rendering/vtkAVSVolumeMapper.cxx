@@ -114,6 +114,7 @@ bool vtkAVSVolumeMapper::PrepareScene(vtkVolume* volume)
   {
     in.DataObject = nullptr;
     in.Scene = avs::VolumeScene();
+    in.SourceArray = nullptr;
   };
   if (!array)
   {
@@ -125,11 +126,15 @@ bool vtkAVSVolumeMapper::PrepareScene(vtkVolume* volume)
     selection.ArrayAccessMode == in.Selection.ArrayAccessMode &&
     selection.ArrayId == in.Selection.ArrayId && selection.ArrayName == in.Selection.ArrayName;
   if (input != in.DataObject || input->GetMTime() != in.DataTime || array != in.ArrayObject ||
-    array->GetMTime() != in.ArrayTime || !sameSelection || in.Scene.Scalars.Values.empty())
+    array->GetMTime() != in.ArrayTime || !sameSelection ||
+    (in.Scene.Scalars.Values.empty() && !in.SourceArray))
   {
+    // The values stay in the array where they can (Volume::Deferred): the upload converts them
+    // slab by slab, and only the CPU's precomputation copies them (EnsureHostScalars).
     vtkAVSDataTranslator::Volume data;
     std::string warning;
-    if (!vtkAVSDataTranslator::ToVolume(input, selection, data, error, warning))
+    in.SourceArray = nullptr;
+    if (!vtkAVSDataTranslator::ToVolume(input, selection, data, error, warning, true))
     {
       forget();
       vtkErrorMacro("Cannot render: " << error);
@@ -147,6 +152,8 @@ bool vtkAVSVolumeMapper::PrepareScene(vtkVolume* volume)
       in.Scene.Medium.Components.back().Values = std::move(data.Components[c]);
     }
     in.Scene.Medium.Validity = std::move(data.Validity);
+    in.SourceArray = data.Deferred ? data.Array : nullptr;
+    in.ScalarInfinities = data.Infinities;
     in.Ranges = data.Ranges;
     in.ScalarType = data.ScalarType;
     in.DataObject = input;
@@ -314,7 +321,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   // Uploads of what changed.
   if (!in.ScalarsUploaded)
   {
-    if (!in.RayCaster.UploadScalars(in.Scene, in.ScalarType, error))
+    if (!in.RayCaster.UploadScalars(in.Scene, in.ScalarType, in.ScalarSource(), error))
     {
       vtkErrorMacro("Cannot render: " << error);
       return false;
@@ -361,11 +368,59 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   return this->PrepareScattering(table, gpuScattering, in.WorldToData, interactive);
 }
 
+vtkAVSVolumeTextures::ScalarSource vtkAVSVolumeMapper::Internals::ScalarSource() const
+{
+  vtkAVSVolumeTextures::ScalarSource source;
+  vtkDataArray* array = this->SourceArray;
+  if (!array || !this->Scene.Scalars.Values.empty())
+  {
+    return source; // the scene's grids hold the values
+  }
+  const std::vector<std::array<double, 2>> ranges = this->Ranges;
+  source.Read = [array, ranges](int c, std::size_t begin, std::size_t end, float* out)
+  {
+    vtkAVSDataTranslator::CopyValues(
+      array, c, ranges[c], static_cast<vtkIdType>(begin), static_cast<vtkIdType>(end), out);
+  };
+  // The array's own memory where its values are the texels: unsigned 8 and 16 bits (R8, R16 and
+  // their multi-channel forms hold the tuples as they are), floats without infinities.
+  const int type = array->GetDataType();
+  if (array->HasStandardMemoryLayout() &&
+    (type == VTK_UNSIGNED_CHAR || type == VTK_UNSIGNED_SHORT ||
+      (type == VTK_FLOAT && this->ScalarInfinities == 0)) &&
+    this->Scene.Medium.Validity.Values.empty())
+  {
+    source.Texels = array->GetVoidPointer(0);
+  }
+  return source;
+}
+
+void vtkAVSVolumeMapper::Internals::EnsureHostScalars()
+{
+  if (!this->SourceArray || !this->Scene.Scalars.Values.empty())
+  {
+    return;
+  }
+  const std::size_t n = this->Scene.Scalars.Geometry.NumberOfPoints();
+  for (std::size_t c = 0; c <= this->Scene.Medium.Components.size(); ++c)
+  {
+    avs::Grid& grid = c == 0 ? this->Scene.Scalars : this->Scene.Medium.Components[c - 1].Values;
+    grid.Values.resize(n);
+    vtkAVSDataTranslator::CopyValues(this->SourceArray,
+      static_cast<int>(c),
+      this->Ranges[c],
+      0,
+      static_cast<vtkIdType>(n),
+      grid.Values.data());
+  }
+}
+
 void vtkAVSVolumeMapper::UpdateExtinction()
 {
   auto& in = *this->Internal;
   if (in.ExtinctionKey[0] != in.DataVersion || in.ExtinctionKey[1] != in.OpacityVersion)
   {
+    in.EnsureHostScalars();
     in.Extinction = avs::ExtinctionGrid(in.Scene);
     in.ExtinctionKey[0] = in.DataVersion;
     in.ExtinctionKey[1] = in.OpacityVersion;

@@ -25,6 +25,7 @@
 #include "vtkImageData.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
+#include "vtkSmartPointer.h"
 #include "vtkVolumeProperty.h"
 
 #include <array>
@@ -41,8 +42,19 @@ struct vtkAVSVolumeMapper::Internals
   vtkMTimeType ArrayTime = 0;
   vtkAVSDataTranslator::Selection Selection;
   /// The volume as the core classifies it: the grids from the data, the functions from the
-  /// property (Scalars empty: nothing converted).
+  /// property (Scalars empty: nothing converted, unless SourceArray is set).
   avs::VolumeScene Scene;
+  /// Where the scalars' values stay when the scene's grids hold only their geometry
+  /// (vtkAVSDataTranslator::Volume::Deferred): the GPU upload reads them from the array, slab by
+  /// slab, and EnsureHostScalars copies them for the CPU's precomputation. Null when the grids
+  /// hold the values (NaN data, arrays of another memory layout).
+  vtkSmartPointer<vtkDataArray> SourceArray;
+  vtkIdType ScalarInfinities = 0; ///< infinite values the conversion clamps
+  /// What UploadScalars reads where the grids are empty.
+  vtkAVSVolumeTextures::ScalarSource ScalarSource() const;
+  /// Fills the scene's grids from SourceArray (the CPU's precomputation needs them); kept until
+  /// the data changes.
+  void EnsureHostScalars();
   std::vector<std::array<double, 2>> Ranges; ///< finite range of each component
   vtkImageData* MaskObject = nullptr;        ///< what Scene.Medium.MaskValues came from
   vtkMTimeType MaskTime = 0;

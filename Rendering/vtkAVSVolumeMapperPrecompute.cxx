@@ -243,6 +243,12 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
     }
   }
   in.LightVolumesUploaded = true;
+  // The averaged extinction beside the lights' channels, where there is room (1-3, 5-7 lights).
+  if (!in.RayCaster.PackAveraged(static_cast<int>(n), error))
+  {
+    vtkErrorMacro("Cannot render: " << error);
+    return false;
+  }
   // The extended model: the diffuse fluence from the light volumes (DiffuseFluence.h).
   if (rp.Model != avs::ScatteringModel::Extended)
   {

@@ -10,6 +10,17 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+double vtkAVSAveragedExtinctionPass::SlabBytes()
+{
+  const char* value = std::getenv("AVS_AVERAGING_SLAB_BYTES");
+  const double bytes = value ? std::atof(value) : 0.0;
+  return bytes > 0.0 ? bytes : 16.0 * 1024 * 1024;
+}
+
 unsigned int vtkAVSAveragedExtinctionPass::Build(const vtkAVSClassification::Layout& layout)
 {
   const std::string defines = layout.Defines();
@@ -52,9 +63,14 @@ bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
   // Scratch[0]), the y pass y (into Scratch[1]), the z pass z (into AveragedExtinction), which
   // the light-volume pass and the ray caster sample. (A classification pass of its own would
   // need sigma_t on the data grid, 4 bytes per voxel.)
+  // Passes 1 and 2 go slab by slab along z, so that Scratch[0] holds one slab (of at most
+  // SlabBytes) rather than l0 x d1 x d2 floats, which is the rebuild's largest grid otherwise.
   const std::array<int, 3>& d = dimensions;
   const std::array<int, 3>& l = lightDimensions;
-  const std::array<int, 3> shapes[4] = { d, { l[0], d[1], d[2] }, { l[0], l[1], d[2] }, l };
+  const double sliceBytes = 4.0 * l[0] * d[1];
+  const int slab =
+    static_cast<int>(std::clamp(std::floor(SlabBytes() / sliceBytes), 1.0, double(d[2])));
+  const std::array<int, 3> shapes[4] = { d, { l[0], d[1], slab }, { l[0], l[1], d[2] }, l };
   vtkSmartPointer<vtkTextureObject>* images[4] = {
     nullptr, &textures.Scratch[0], &textures.Scratch[1], &textures.AveragedExtinction
   };
@@ -65,6 +81,7 @@ bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
       return false;
     }
   }
+  ++textures.AveragedWrites;
   const GLuint program = this->Program;
   vtkAVSRenderPasses::DiscardErrors(); // the check at the end is of this pass alone
   textures.Window->GetShaderCache()->ReleaseCurrentShader();
@@ -78,14 +95,14 @@ bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
   glUniform1i(location("u_scalars"), textures.Scalars->GetTextureUnit());
   textures.Classification.Bind(program);
   vtkAVSShaderOptions::SetClipUniforms(program, clip);
-  for (int pass = 1; pass < 4; ++pass)
+  // Pass p reads images[p - 1] (pass 1: the scalars, classified) over `in` and writes images[p].
+  auto run = [&](int pass, const std::array<int, 3>& in, int zOffset)
   {
-    // Pass p reads images[p - 1] (pass 1: the scalars, classified) and writes images[p].
-    const std::array<int, 3>& in = shapes[pass - 1];
     glBindImageTexture(
       0, pass > 1 ? (*images[pass - 1])->GetHandle() : 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
     glBindImageTexture(1, (*images[pass])->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
     glUniform1i(location("u_pass"), pass);
+    glUniform1i(location("u_zOffset"), zOffset);
     glUniform3i(location("u_dimensions"), in[0], in[1], in[2]);
     const int axis = pass - 1;
     const int u = axis == 0 ? in[1] : in[0];
@@ -94,7 +111,14 @@ bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
     glUniform1i(location("u_targetLength"), l[axis]);
     glDispatchCompute(static_cast<GLuint>((u + 7) / 8), static_cast<GLuint>((v + 7) / 8), 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  };
+  for (int z0 = 0; z0 < d[2]; z0 += slab)
+  {
+    const int depth = std::min(slab, d[2] - z0);
+    run(1, { d[0], d[1], depth }, z0);
+    run(2, { l[0], d[1], depth }, z0);
   }
+  run(3, shapes[2], 0);
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
   glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
   glUseProgram(0);

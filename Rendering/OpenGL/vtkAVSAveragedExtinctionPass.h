@@ -3,11 +3,13 @@
  * @brief   the averaged extinction computed on the GPU (private)
  *
  * The compute pass of avs_average_cs.glsl over the ray caster's textures
- * (vtkAVSVolumeTextures): pass 0 classifies the uploaded scalars into sigma_t on the data's grid
- * (zero outside the clip region), passes 1-3 box-sum it along x, y and z with the averaging half
+ * (vtkAVSVolumeTextures): passes 1-3 box-sum sigma_t (pass 1 classifies the uploaded scalars
+ * as it reads them, zero outside the clip region) along x, y and z with the averaging half
  * widths, each axis interpolated onto the light grid as it is summed, into AveragedExtinction,
- * which the light-volume pass and the ray caster sample. The CPU twin is
- * Rendering/Core/AveragedExtinction.cxx.
+ * which the light-volume pass and the ray caster sample. Passes 1 and 2 go slab by slab along
+ * z, so that pass 1's result (light-grid x by data y by data z floats otherwise, a byte per
+ * voxel at 512^3 with a 128^3 light grid) is held for at most SlabBytes at a time. The CPU
+ * twin is Rendering/Core/AveragedExtinction.cxx.
  */
 #ifndef vtkAVSAveragedExtinctionPass_h
 #define vtkAVSAveragedExtinctionPass_h
@@ -23,6 +25,11 @@ class vtkAVSVolumeTextures;
 class vtkAVSAveragedExtinctionPass
 {
 public:
+  /// The most that pass 1's result takes at once (bytes of the slab's floats; at least one
+  /// slice): 16 MiB, or AVS_AVERAGING_SLAB_BYTES from the environment where set (so that a test
+  /// on a small volume can make the passes go in several slabs).
+  static double SlabBytes();
+
   vtkAVSAveragedExtinctionPass() = default;
   vtkAVSAveragedExtinctionPass(const vtkAVSAveragedExtinctionPass&) = delete;
   vtkAVSAveragedExtinctionPass& operator=(const vtkAVSAveragedExtinctionPass&) = delete;

@@ -50,6 +50,11 @@ bool vtkAVSLightVolumePass::Run(vtkAVSVolumeTextures& textures,
     GL_READ_WRITE,
     textures.LightVolumeFormat());
   glUniform1i(location("u_channel"), index % 4);
+  glUniform1i(location("u_copyAveraged"), 0);
+  if (index == textures.AveragedSlot)
+  {
+    textures.AveragedSlot = -1; // overwritten
+  }
   glUniform3i(location("u_targetDimensions"), d[0], d[1], d[2]);
   glUniform3f(location("u_targetSpacing"),
     static_cast<float>(lightGrid.Spacing.x),
@@ -87,5 +92,51 @@ bool vtkAVSLightVolumePass::Run(vtkAVSVolumeTextures& textures,
     error = "the light-volume compute pass failed (GL error " + std::to_string(status) + ")";
     return false;
   }
+  return true;
+}
+
+bool vtkAVSLightVolumePass::CopyAveraged(vtkAVSVolumeTextures& textures,
+  int slot,
+  std::string& error)
+{
+  const std::array<int, 3> d = textures.LightTextureDimensions;
+  const int texture = slot / 4;
+  if (slot < 0 || texture >= vtkAVSVolumeTextures::NumberOfLightTextures ||
+    !textures.LightVolumes[texture] || !textures.AveragedExtinction)
+  {
+    error = "no light-volume channel to hold the averaged extinction";
+    return false;
+  }
+  const GLuint program = this->Program;
+  vtkAVSRenderPasses::DiscardErrors();
+  textures.Window->GetShaderCache()->ReleaseCurrentShader();
+  glUseProgram(program);
+  auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
+  glBindImageTexture(0,
+    textures.LightVolumes[texture]->GetHandle(),
+    0,
+    GL_TRUE,
+    0,
+    GL_READ_WRITE,
+    textures.LightVolumeFormat());
+  glUniform1i(location("u_channel"), slot % 4);
+  glUniform1i(location("u_copyAveraged"), 1);
+  glUniform3i(location("u_targetDimensions"), d[0], d[1], d[2]);
+  textures.AveragedExtinction->Activate();
+  glUniform1i(location("u_averaged"), textures.AveragedExtinction->GetTextureUnit());
+  glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8),
+    static_cast<GLuint>((d[1] + 7) / 8),
+    static_cast<GLuint>(d[2]));
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, textures.LightVolumeFormat());
+  glUseProgram(0);
+  textures.AveragedExtinction->Deactivate();
+  if (const GLenum status = glGetError())
+  {
+    error = "copying the averaged extinction failed (GL error " + std::to_string(status) + ")";
+    return false;
+  }
+  textures.AveragedSlot = slot;
+  textures.AveragedSlotWrites = textures.AveragedWrites;
   return true;
 }

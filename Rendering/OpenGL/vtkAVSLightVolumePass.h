@@ -5,7 +5,8 @@
  * The compute pass of avs_lightvolume_cs.glsl: for one light (in the data's frame), the
  * transmittance of each node of the light grid through the averaged extinction, weighted by the
  * table slice's log gain, into the light's channel of the packed light-volume textures
- * (vtkAVSVolumeTextures; channel c of texture t holds light 4 t + c, allocated once per size).
+ * (vtkAVSVolumeTextures; channel c of texture t holds light 4 t + c, allocated once per size),
+ * and the copy of the averaged extinction into the channel after the last light's.
  * The CPU twin is Rendering/Core/LightVolume.cxx.
  */
 #ifndef vtkAVSLightVolumePass_h
@@ -39,6 +40,11 @@ public:
     double radius,
     avs::TubeLaw law,
     std::string& error);
+  /// Copies the averaged extinction into slot `slot` of the packed textures (channel slot % 4
+  /// of texture slot / 4, which holds no light), where the ray caster reads it with the tube
+  /// transmittances: one texture fetch per sample fewer for 1-3 and 5-7 lights. Records it in
+  /// vtkAVSVolumeTextures::AveragedSlot.
+  bool CopyAveraged(vtkAVSVolumeTextures& textures, int slot, std::string& error);
   /// Forgets the program, deleting it when its context is current (`context`).
   void ReleaseGraphicsResources(bool context);
 

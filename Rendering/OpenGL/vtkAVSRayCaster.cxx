@@ -78,9 +78,10 @@ int vtkAVSRayCaster::MaximumTextureSize3D() const
 // The uploads: vtkAVSVolumeTextures.
 bool vtkAVSRayCaster::UploadScalars(const avs::VolumeScene& scene,
   int scalarType,
+  const vtkAVSVolumeTextures::ScalarSource& source,
   std::string& error)
 {
-  return this->Textures.UploadScalars(scene, scalarType, error);
+  return this->Textures.UploadScalars(scene, scalarType, source, error);
 }
 
 bool vtkAVSRayCaster::UploadClassification(const avs::VolumeScene& scene, std::string& error)
@@ -216,6 +217,22 @@ bool vtkAVSRayCaster::ComputeLightVolume(int index,
   return this->LightVolumePass.Run(this->Textures, index, lightGrid, light, radius, law, error);
 }
 
+bool vtkAVSRayCaster::PackAveraged(int lights, std::string& error)
+{
+  vtkAVSVolumeTextures& tx = this->Textures;
+  const int texture = lights / 4;
+  if (lights < 1 || lights % 4 == 0 || lights > MaximumNumberOfLights ||
+    !this->SupportsComputeShaders() || tx.HasAveragedIn(lights) || !tx.AveragedExtinction ||
+    !tx.LightVolumes[texture] ||
+    tx.LightTextureDimensions[0] != int(tx.AveragedExtinction->GetWidth()) ||
+    tx.LightTextureDimensions[1] != int(tx.AveragedExtinction->GetHeight()) ||
+    tx.LightTextureDimensions[2] != int(tx.AveragedExtinction->GetDepth()))
+  {
+    return true; // nothing to copy, or nowhere to copy it: the rays read its own texture
+  }
+  return this->LightVolumePass.CopyAveraged(tx, lights, error);
+}
+
 bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::string& error)
 {
   vtkOpenGLRenderWindow* window = this->Window;
@@ -232,9 +249,19 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     return false;
   }
   const bool blend = frame.Mode == avs::RenderMode::EmissionAbsorption;
+  // Ambient scattering reads the averaged extinction from the light textures where PackAveraged
+  // left a copy in the channel after the last light's.
+  const int lightCount =
+    static_cast<int>(std::min<std::size_t>(frame.Lights.size(), MaximumNumberOfLights));
+  const bool packed =
+    frame.Mode == avs::RenderMode::AmbientScattering && tx.HasAveragedIn(lightCount);
   if (!this->EnsureProgram(frame.Mode,
-        vtkAVSShaderAssembly::RayCastDefines(
-          frame.Mode, frame.Parameters, frame.Lights, static_cast<int>(tx.TableSize[1]), layout) +
+        vtkAVSShaderAssembly::RayCastDefines(frame.Mode,
+          frame.Parameters,
+          frame.Lights,
+          static_cast<int>(tx.TableSize[1]),
+          layout,
+          packed ? lightCount : -1) +
           vtkAVSShaderOptions::ClipDefines(frame.Clip) +
           (blend ? vtkAVSShaderOptions::BlendDefines(frame.Blend) : std::string())))
   {
@@ -312,8 +339,11 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
       error = "the scattering volumes are not uploaded";
       return false;
     }
-    tx.AveragedExtinction->Activate();
-    program->SetUniformi("u_averagedExtinction", tx.AveragedExtinction->GetTextureUnit());
+    if (!packed)
+    {
+      tx.AveragedExtinction->Activate();
+      program->SetUniformi("u_averagedExtinction", tx.AveragedExtinction->GetTextureUnit());
+    }
     const char* names[vtkAVSVolumeTextures::NumberOfLightTextures] = { "u_lightVolumes0",
       "u_lightVolumes1" };
     for (int t = 0; t < textures; ++t)

@@ -73,8 +73,12 @@ public:
 
   /// Texture uploads; return false and say why in `error` when the GPU refuses. The volume:
   /// its components (and the validity of NaN data) in one texture, in the texel format of the
-  /// array's VTK type `scalarType` (vtkAVSTextureUpload).
-  bool UploadScalars(const avs::VolumeScene& scene, int scalarType, std::string& error);
+  /// array's VTK type `scalarType` (vtkAVSTextureUpload), from the scene's grids or, where they
+  /// hold no values, from `source`.
+  bool UploadScalars(const avs::VolumeScene& scene,
+    int scalarType,
+    const vtkAVSVolumeTextures::ScalarSource& source,
+    std::string& error);
   /// The classification's tables, mask and uniforms (vtkAVSClassification), after the scalars.
   bool UploadClassification(const avs::VolumeScene& scene, std::string& error);
   /// The CPU's ambient-scattering volumes: the averaged extinction on the light grid (which
@@ -116,6 +120,12 @@ public:
     double radius,
     avs::TubeLaw law,
     std::string& error);
+  /// With 1-3 or 5-7 `lights`, copies the averaged extinction into the free channel after the
+  /// last light's (compute shaders; vtkAVSLightVolumePass::CopyAveraged), which saves the rays
+  /// a texture fetch per sample. Call after the light volumes are current; nothing happens when
+  /// the copy is current, or when there is no free channel or no compute shader (the rays then
+  /// read the averaged extinction's own texture). False on a GL error.
+  bool PackAveraged(int lights, std::string& error);
   bool UploadOcclusion(const avs::Grid& occlusion, std::string& error);
   bool UploadTableSlice(const avs::ScatteringSlice& slice, std::string& error);
   /// The extended model's diffuse fluence (vtkAVSDiffuseVolume), bound when the frame's

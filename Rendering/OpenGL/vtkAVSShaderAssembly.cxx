@@ -40,7 +40,8 @@ std::string vtkAVSShaderAssembly::RayCastDefines(avs::RenderMode mode,
   const avs::ScatteringParameters& p,
   const std::vector<avs::Light>& lights,
   int tauNodes,
-  const vtkAVSClassification::Layout& layout)
+  const vtkAVSClassification::Layout& layout,
+  int averagedSlot)
 {
   // The classification's choices (avs_classify.glsl).
   std::string defines = layout.Defines();
@@ -88,6 +89,13 @@ std::string vtkAVSShaderAssembly::RayCastDefines(avs::RenderMode mode,
   const int n = static_cast<int>(lights.size());
   defines += "#define AVS_LIGHT_TEXTURES " +
     std::to_string(vtkAVSVolumeTextures::LightTexturesFor(n)) + "\n";
+  // The averaged extinction in the free channel after the last light's, read with them.
+  if (averagedSlot >= 0 &&
+    vtkAVSVolumeTextures::LightTexturesFor(averagedSlot + 1) ==
+      vtkAVSVolumeTextures::LightTexturesFor(n))
+  {
+    defines += "#define AVS_AVERAGED_SLOT " + std::to_string(averagedSlot) + "\n";
+  }
   if (p.EmissionWeight > 0.0 && p.Albedo < 1.0)
   {
     defines += "#define AVS_EMISSION\n";

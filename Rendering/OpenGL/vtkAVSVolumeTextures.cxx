@@ -32,6 +32,7 @@ void vtkAVSVolumeTextures::ReleaseGraphicsResources(vtkWindow* window)
       t->ReleaseGraphicsResources(window);
     }
   }
+  this->AveragedSlot = -1;
   this->Scalars = this->AveragedExtinction = this->Occlusion = this->Table = nullptr;
   for (auto& t : this->LightVolumes)
   {
@@ -150,9 +151,12 @@ namespace
 {
 // Writes the slices [z0, z1) of the scene's channels (the components, then the validity where
 // the layout puts it beside them) into `texels` as T, each value v stored as
-// round(format.Encode(v)) for normalized texels and as v for floats.
+// round(format.Encode(v)) for normalized texels and as v for floats. The values are the scene's
+// grids, or, where a grid holds none (not converted on the host), what `source` reads, one
+// slice at a time.
 template<typename T>
 void PackSlab(const avs::VolumeScene& scene,
+  const vtkAVSVolumeTextures::ScalarSource& source,
   const vtkAVSClassification::Layout& layout,
   const vtkAVSTextureUpload::TexelFormat& format,
   int z0,
@@ -161,27 +165,39 @@ void PackSlab(const avs::VolumeScene& scene,
 {
   const std::size_t slice = static_cast<std::size_t>(scene.Scalars.Geometry.Dimensions[0]) *
     scene.Scalars.Geometry.Dimensions[1];
-  const std::size_t begin = slice * z0, end = slice * z1;
   const int channels = layout.ScalarChannels();
-  for (int c = 0; c < channels; ++c)
+  std::vector<float> read;
+  for (int z = z0; z < z1; ++z)
   {
-    const std::vector<float>& v = c == layout.Components ? scene.Medium.Validity.Values
-      : c == 0                                           ? scene.Scalars.Values
-               : scene.Medium.Components[c - 1].Values.Values;
-    T* out = texels + c;
-    if (format.IsNormalized())
+    const std::size_t begin = slice * z;
+    T* first = texels + static_cast<std::size_t>(channels) * slice * (z - z0);
+    for (int c = 0; c < channels; ++c)
     {
-      const double top = static_cast<double>(format.Scale);
-      for (std::size_t i = begin; i < end; ++i, out += channels)
+      const std::vector<float>& grid = c == layout.Components ? scene.Medium.Validity.Values
+        : c == 0                                              ? scene.Scalars.Values
+                 : scene.Medium.Components[c - 1].Values.Values;
+      const float* v = grid.data() + begin;
+      if (grid.empty())
       {
-        *out = static_cast<T>(std::lround(std::clamp(format.Encode(v[i]), 0.0, top)));
+        read.resize(slice);
+        source.Read(c, begin, begin + slice, read.data());
+        v = read.data();
       }
-    }
-    else
-    {
-      for (std::size_t i = begin; i < end; ++i, out += channels)
+      T* out = first + c;
+      if (format.IsNormalized())
       {
-        *out = static_cast<T>(v[i]);
+        const double top = static_cast<double>(format.Scale);
+        for (std::size_t i = 0; i < slice; ++i, out += channels)
+        {
+          *out = static_cast<T>(std::lround(std::clamp(format.Encode(v[i]), 0.0, top)));
+        }
+      }
+      else
+      {
+        for (std::size_t i = 0; i < slice; ++i, out += channels)
+        {
+          *out = static_cast<T>(v[i]);
+        }
       }
     }
   }
@@ -190,6 +206,7 @@ void PackSlab(const avs::VolumeScene& scene,
 
 bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
   int scalarType,
+  const ScalarSource& source,
   std::string& error)
 {
   const vtkAVSClassification::Layout layout = vtkAVSClassification::LayoutOf(scene);
@@ -200,27 +217,39 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
     vtkAVSTextureUpload::TexelFormat::ForScalars(scalarType, channels, layout.Validity != 0);
   const std::size_t slice = static_cast<std::size_t>(scene.Scalars.Geometry.Dimensions[0]) *
     scene.Scalars.Geometry.Dimensions[1];
-  const vtkAVSTextureUpload::SlabFill fill = [&scene, &layout, &format, channels, slice](
-                                               int z0, int z1, void* texels) -> const void*
+  const std::size_t texel = static_cast<std::size_t>(channels) * format.HostBytes();
+  const bool onHost = !scene.Scalars.Values.empty();
+  const vtkAVSTextureUpload::SlabFill fill =
+    [&scene, &source, &layout, &format, channels, slice, texel, onHost](
+      int z0, int z1, void* texels) -> const void*
   {
-    if (!format.IsNormalized() && channels == 1)
+    if (!onHost && source.Texels)
+    {
+      return static_cast<const char*>(source.Texels) + texel * slice * z0; // the array itself
+    }
+    if (onHost && !format.IsNormalized() && channels == 1)
     {
       return scene.Scalars.Values.data() + slice * z0; // the grid itself
     }
     if (format.HostType == VTK_UNSIGNED_CHAR)
     {
-      PackSlab(scene, layout, format, z0, z1, static_cast<unsigned char*>(texels));
+      PackSlab(scene, source, layout, format, z0, z1, static_cast<unsigned char*>(texels));
     }
     else if (format.HostType == VTK_UNSIGNED_SHORT)
     {
-      PackSlab(scene, layout, format, z0, z1, static_cast<unsigned short*>(texels));
+      PackSlab(scene, source, layout, format, z0, z1, static_cast<unsigned short*>(texels));
     }
     else
     {
-      PackSlab(scene, layout, format, z0, z1, static_cast<float*>(texels));
+      PackSlab(scene, source, layout, format, z0, z1, static_cast<float*>(texels));
     }
     return texels;
   };
+  if (!onHost && !source.Read)
+  {
+    error = "the scalars are neither on the host nor readable";
+    return false;
+  }
   if (!vtkAVSTextureUpload::Upload(this->Window,
         this->Scalars,
         scene.Scalars.Geometry.Dimensions,
@@ -281,6 +310,7 @@ bool vtkAVSVolumeTextures::EnsureLightTextures(const std::array<int, 3>& dimensi
 {
   if (dimensions != this->LightTextureDimensions)
   {
+    this->AveragedSlot = -1;
     for (auto& t : this->LightVolumes)
     {
       if (t)
@@ -311,6 +341,7 @@ bool vtkAVSVolumeTextures::EnsureLightTextures(const std::array<int, 3>& dimensi
 
 bool vtkAVSVolumeTextures::UploadAveraged(const avs::Grid& averaged, std::string& error)
 {
+  ++this->AveragedWrites;
   return this->UploadGrid(
     this->AveragedExtinction, averaged.Geometry.Dimensions, 1, averaged.Values.data(), error);
 }
@@ -333,6 +364,7 @@ bool vtkAVSVolumeTextures::UploadLightVolumes(const std::vector<avs::Grid>& ligh
     }
   }
   const int textures = LightTexturesFor(static_cast<int>(lights.size()));
+  this->AveragedSlot = -1; // every channel is written below
   for (int t = 0; t < NumberOfLightTextures; ++t)
   {
     if (t >= textures)

@@ -26,6 +26,8 @@
 #include "vtkWeakPointer.h"
 
 #include <array>
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -71,10 +73,27 @@ public:
   /// (filled with ones) where missing or of another size.
   bool EnsureLightTextures(const std::array<int, 3>& dimensions, int count, std::string& error);
 
+  /// Where the scalars' values come from when the scene's grids hold none (a GPU mapper does
+  /// not keep a float copy of the volume on the host, vtkAVSDataTranslator::Volume::Deferred).
+  struct ScalarSource
+  {
+    /// Writes the values [begin, end) (voxel ids) of channel c (0: the scalars, then the other
+    /// components) as floats into `out`.
+    std::function<void(int c, std::size_t begin, std::size_t end, float* out)> Read;
+    /// Where the texels already lie, interleaved as the texture stores them (the array's own
+    /// memory when its type is the texel type: unsigned 8 or 16 bits, or floats without
+    /// infinities), or null.
+    const void* Texels = nullptr;
+  };
+
   /// The uploads of vtkAVSRayCaster (documented there).
   /// The scalars in the texel format of their VTK type `scalarType`
-  /// (vtkAVSTextureUpload::TexelFormat::ForScalars), converted slab by slab.
-  bool UploadScalars(const avs::VolumeScene& scene, int scalarType, std::string& error);
+  /// (vtkAVSTextureUpload::TexelFormat::ForScalars), converted slab by slab from the scene's
+  /// grids or, where they are empty, from `source`.
+  bool UploadScalars(const avs::VolumeScene& scene,
+    int scalarType,
+    const ScalarSource& source,
+    std::string& error);
   bool UploadClassification(const avs::VolumeScene& scene, std::string& error);
   bool UploadAveraged(const avs::Grid& averaged, std::string& error);
   bool UploadLightVolumes(const std::vector<avs::Grid>& lights, std::string& error);
@@ -109,6 +128,19 @@ public:
   /// The averaged extinction on the light grid, which the light-volume pass and the ray caster
   /// sample.
   vtkSmartPointer<vtkTextureObject> AveragedExtinction;
+  /// How often AveragedExtinction was written (uploaded or computed).
+  int AveragedWrites = 0;
+  /// The slot of the packed light textures (light slots 0-7: channel slot % 4 of texture
+  /// slot / 4) that holds a copy of the averaged extinction (vtkAVSLightVolumePass::CopyAveraged),
+  /// -1 for none; the copy is current while AveragedSlotWrites == AveragedWrites.
+  int AveragedSlot = -1;
+  int AveragedSlotWrites = -1;
+  /// Whether slot `slot` holds the current averaged extinction.
+  bool HasAveragedIn(int slot) const
+  {
+    return slot >= 0 && this->AveragedSlot == slot &&
+      this->AveragedSlotWrites == this->AveragedWrites;
+  }
   /// The averaged-extinction pass's intermediate grids (sigma_t summed along x, then along y,
   /// each shrunk to the light grid on its axis), released after the pass (ReleaseScratch).
   vtkSmartPointer<vtkTextureObject> Scratch[2];

@@ -19,10 +19,13 @@
 #define AVS_EFFECT_TERMINATION
 #endif
 // The averaged sigma_t on the light grid (where the precomputation leaves it), read at the
-// sample with the light volumes' coordinate: one more fetch per sample than a channel beside
-// the scalars on the data grid, for a texture 4 bytes per light-grid point instead of 8 per
-// voxel (ARCHITECTURE.md, "Texel formats").
+// sample with the light volumes' coordinate (ARCHITECTURE.md, "Texel formats"): with 1-3 or 5-7
+// lights from the copy in the free channel after the last light's, AVS_AVERAGED_SLOT (slot s:
+// channel s % 4 of light texture s / 4), in the same fetch as the lights; else from its own
+// texture, one fetch more.
+#ifndef AVS_AVERAGED_SLOT
 uniform sampler3D u_averagedExtinction;
+#endif
 // Light grid: tube transmittance of lights 0-3, then 4-7.
 #if AVS_LIGHT_TEXTURES > 0
 uniform sampler3D u_lightVolumes0;
@@ -140,7 +143,6 @@ vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified)
   // The averaged sigma_t and the tube transmittances of all lights at x' (light grid), four
   // lights to a texture fetch.
   vec3 lc = index * g_lightScale + g_lightOffset;
-  float v = TableTauCoordinate(u_ambientRadius * textureLod(u_averagedExtinction, lc, 0.0).r);
 #if AVS_LIGHT_TEXTURES > 0
   vec4 tubes0 = textureLod(u_lightVolumes0, lc, 0.0);
 #else
@@ -151,6 +153,12 @@ vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified)
 #else
   vec4 tubes1 = vec4(1.0);
 #endif
+#ifdef AVS_AVERAGED_SLOT
+  float averaged = AVS_AVERAGED_SLOT < 4 ? tubes0[AVS_AVERAGED_SLOT & 3] : tubes1[AVS_AVERAGED_SLOT & 3];
+#else
+  float averaged = textureLod(u_averagedExtinction, lc, 0.0).r;
+#endif
+  float v = TableTauCoordinate(u_ambientRadius * averaged);
   vec3 inscatter = vec3(0.0);
 #define AVS_ADD_LIGHT(j) inscatter += LightInScattering(j, world, direction, Tube(j, tubes0, tubes1), v);
   AVS_FOR_EACH_LIGHT(AVS_ADD_LIGHT)

@@ -9,8 +9,10 @@
 // that axis by linear interpolation between the two voxels around each (so each pass shrinks
 // its axis to the target's size, and the three together give the data-grid average
 // interpolated trilinearly). Pass 3 also divides by the full box count, so voxels outside count
-// as 0; its result is what the light-volume pass and the ray caster sample. The
-// classification's defines come before this.
+// as 0; its result is what the light-volume pass and the ray caster sample. Passes 1 and 2 run
+// slab by slab along z (u_zOffset: the slab's first slice), so that pass 1's result, the
+// largest of the intermediate grids, is held for one slab at a time. The classification's
+// defines come before this.
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(r32f, binding = 0) uniform readonly image3D u_input;
@@ -20,6 +22,7 @@ uniform ivec3 u_dimensions;  // of u_input (pass 1: of the data)
 uniform int u_targetLength;  // points of the target grid along this pass's axis
 uniform int u_halfWidth;     // k along this pass's axis
 uniform float u_inverseCount; // 1 / prod(2 k_a + 1), applied in the last pass
+uniform int u_zOffset;       // passes 1 and 2: the slab's first slice in the data's z
 
 // u_scalars (pass 1) is declared by the classification.
 // Pass 1's input: Classify(s), the ray caster's classification (avs_classify.glsl), and 0
@@ -29,7 +32,9 @@ uniform float u_inverseCount; // 1 / prod(2 k_a + 1), applied in the last pass
 
 void Store(ivec3 v, double sum)
 {
-  imageStore(u_output, v, vec4(u_pass == 3 ? float(sum) * u_inverseCount : float(sum)));
+  // Pass 2 writes the slab into the whole of its target; pass 1 into the slab's grid.
+  ivec3 at = u_pass == 2 ? v + ivec3(0, 0, u_zOffset) : v;
+  imageStore(u_output, at, vec4(u_pass == 3 ? float(sum) * u_inverseCount : float(sum)));
 }
 
 // sigma_t at voxel v: classified from the scalars in pass 1, the previous pass's result after.
@@ -37,8 +42,9 @@ float Input(ivec3 v)
 {
   if (u_pass == 1)
   {
-    vec3 coordinate = (vec3(v) + 0.5) / vec3(u_dimensions);
-    return Classify(texelFetch(u_scalars, v, 0), coordinate).a * ClipInside(vec3(v), true);
+    ivec3 w = v + ivec3(0, 0, u_zOffset); // the voxel in the data
+    vec3 coordinate = (vec3(w) + 0.5) / vec3(textureSize(u_scalars, 0));
+    return Classify(texelFetch(u_scalars, w, 0), coordinate).a * ClipInside(vec3(w), true);
   }
   return imageLoad(u_input, v).r;
 }

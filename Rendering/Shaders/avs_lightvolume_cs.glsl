@@ -27,6 +27,10 @@ uniform float u_radius;
 // (the extended model's positional lights; TubeLaw in LightVolume.h).
 uniform int u_directBeam;
 
+// 1: no tube marching; the averaged extinction itself is copied into channel u_channel, where
+// the ray caster reads it beside the lights' (the free channel of the last light texture).
+uniform int u_copyAveraged;
+
 uniform int u_positional;       // 0: directional, 1: positional
 uniform vec3 u_light;           // propagation direction (directional) or position (positional)
 
@@ -98,6 +102,13 @@ void main()
   ivec3 voxel = ivec3(gl_GlobalInvocationID);
   if (any(greaterThanEqual(voxel, u_targetDimensions)))
   {
+    return;
+  }
+  if (u_copyAveraged != 0)
+  {
+    vec4 texel = imageLoad(u_target, voxel);
+    texel[u_channel] = texelFetch(u_averaged, voxel, 0).r;
+    imageStore(u_target, voxel, texel);
     return;
   }
   vec3 x = vec3(voxel) * u_targetSpacing;
