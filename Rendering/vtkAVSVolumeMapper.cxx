@@ -355,8 +355,9 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   const bool gpuScattering = effect == 2 && this->PrecomputeOnGPU &&
     in.RayCaster.SupportsComputeShaders() &&
     table->Axes.NumberOfTau <= vtkAVSRayCaster::MaximumTauNodes;
-  // (A piece of a larger whole computes its share of the averaged extinction on the CPU.)
-  if (!gpuScattering || this->LitAsPiece)
+  // (A piece of a larger whole computes its share of the averaged extinction on the CPU.
+  // Ambient occlusion asks for the grid itself where it computes on the CPU.)
+  if (effect == 2 && (!gpuScattering || this->LitAsPiece))
   {
     this->UpdateExtinction();
   }

@@ -40,7 +40,7 @@ bool vtkAVSVolumeMapper::PrepareOcclusion()
   std::string error;
   // The occlusion volume's grid: the data's, capped like the light volumes'.
   const avs::GridGeometry occlusionGrid = g.Capped(rp.OcclusionVolumeMaximumDimension);
-  if (in.OcclusionKey[0] != in.ExtinctionKey[0] || in.OcclusionKey[1] != in.ExtinctionKey[1] ||
+  if (in.OcclusionKey[0] != in.DataVersion || in.OcclusionKey[1] != in.OpacityVersion ||
     in.OcclusionRadius != rp.OcclusionRadius || in.OcclusionDirections != rp.NumberOfDirections ||
     in.OcclusionDimensions != occlusionGrid.Dimensions || !in.OcclusionUploaded)
   {
@@ -49,10 +49,11 @@ bool vtkAVSVolumeMapper::PrepareOcclusion()
       rp.NumberOfDirections <= 256;
     if (gpu)
     {
-      if (!in.RayCaster.ComputeOcclusion(in.Extinction,
+      if (!in.RayCaster.ComputeOcclusion(g,
             occlusionGrid.Dimensions,
             rp.OcclusionRadius,
             rp.NumberOfDirections,
+            in.Scene.Clip,
             error))
       {
         vtkErrorMacro("Cannot render: " << error);
@@ -61,6 +62,7 @@ bool vtkAVSVolumeMapper::PrepareOcclusion()
     }
     else
     {
+      this->UpdateExtinction();
       const avs::Grid ao = avs::ComputeAmbientOcclusion(in.Extinction,
         occlusionGrid,
         rp.OcclusionRadius,
@@ -76,8 +78,8 @@ bool vtkAVSVolumeMapper::PrepareOcclusion()
     }
     this->OcclusionOnGPU = gpu;
     this->UpdateProgress(1.0);
-    in.OcclusionKey[0] = in.ExtinctionKey[0];
-    in.OcclusionKey[1] = in.ExtinctionKey[1];
+    in.OcclusionKey[0] = in.DataVersion;
+    in.OcclusionKey[1] = in.OpacityVersion;
     in.OcclusionRadius = rp.OcclusionRadius;
     in.OcclusionDirections = rp.NumberOfDirections;
     in.OcclusionDimensions = occlusionGrid.Dimensions;

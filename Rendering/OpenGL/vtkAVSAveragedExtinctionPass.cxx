@@ -45,11 +45,9 @@ void vtkAVSAveragedExtinctionPass::ReleaseGraphicsResources(bool context)
   this->Defines.clear();
 }
 
-bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
-  const std::array<int, 3>& dimensions,
-  const std::array<int, 3>& lightDimensions,
-  const std::array<int, 3>& halfWidths,
+bool vtkAVSAveragedExtinctionPass::Begin(vtkAVSVolumeTextures& textures,
   const avs::ClipRegion& clip,
+  double inverseCount,
   std::string& error)
 {
   // The program for this classification.
@@ -59,6 +57,65 @@ bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
     error = "the averaged-extinction compute shader did not compile (see the log above)";
     return false;
   }
+  const GLuint program = this->Program;
+  vtkAVSRenderPasses::DiscardErrors(); // the check at the end is of this pass alone
+  textures.Window->GetShaderCache()->ReleaseCurrentShader();
+  glUseProgram(program);
+  glUniform1f(glGetUniformLocation(program, "u_inverseCount"), static_cast<float>(inverseCount));
+  vtkAVSVolumeTextures::SetVolumeFilter(textures.Scalars, layout.Nearest);
+  textures.Scalars->Activate();
+  glUniform1i(glGetUniformLocation(program, "u_scalars"), textures.Scalars->GetTextureUnit());
+  textures.Classification.Bind(program);
+  vtkAVSShaderOptions::SetClipUniforms(program, clip);
+  return true;
+}
+
+void vtkAVSAveragedExtinctionPass::Dispatch(int pass,
+  vtkTextureObject* input,
+  vtkTextureObject* output,
+  const std::array<int, 3>& in,
+  int zOffset,
+  int halfWidth,
+  int targetLength)
+{
+  const GLuint program = this->Program;
+  auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
+  glBindImageTexture(0, input ? input->GetHandle() : 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
+  glBindImageTexture(1, output->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+  glUniform1i(location("u_pass"), pass);
+  glUniform1i(location("u_zOffset"), zOffset);
+  glUniform3i(location("u_dimensions"), in[0], in[1], in[2]);
+  const int axis = pass - 1;
+  const int u = axis == 0 ? in[1] : in[0];
+  const int v = axis == 2 ? in[1] : in[2];
+  glUniform1i(location("u_halfWidth"), halfWidth);
+  glUniform1i(location("u_targetLength"), targetLength);
+  glDispatchCompute(static_cast<GLuint>((u + 7) / 8), static_cast<GLuint>((v + 7) / 8), 1);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+bool vtkAVSAveragedExtinctionPass::End(vtkAVSVolumeTextures& textures, std::string& error)
+{
+  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
+  glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+  glUseProgram(0);
+  textures.Scalars->Deactivate();
+  textures.Classification.Unbind();
+  if (const GLenum status = glGetError())
+  {
+    error = "the averaged-extinction compute pass failed (GL error " + std::to_string(status) + ")";
+    return false;
+  }
+  return true;
+}
+
+bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
+  const std::array<int, 3>& dimensions,
+  const std::array<int, 3>& lightDimensions,
+  const std::array<int, 3>& halfWidths,
+  const avs::ClipRegion& clip,
+  std::string& error)
+{
   // The x pass classifies the scalars as it sums them and shrinks x to the light grid (into
   // Scratch[0]), the y pass y (into Scratch[1]), the z pass z (into AveragedExtinction), which
   // the light-volume pass and the ray caster sample. (A classification pass of its own would
@@ -82,35 +139,22 @@ bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
     }
   }
   ++textures.AveragedWrites;
-  const GLuint program = this->Program;
-  vtkAVSRenderPasses::DiscardErrors(); // the check at the end is of this pass alone
-  textures.Window->GetShaderCache()->ReleaseCurrentShader();
-  glUseProgram(program);
-  auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
   const double count =
     (2.0 * halfWidths[0] + 1) * (2.0 * halfWidths[1] + 1) * (2.0 * halfWidths[2] + 1);
-  glUniform1f(location("u_inverseCount"), static_cast<float>(1.0 / count));
-  vtkAVSVolumeTextures::SetVolumeFilter(textures.Scalars, layout.Nearest);
-  textures.Scalars->Activate();
-  glUniform1i(location("u_scalars"), textures.Scalars->GetTextureUnit());
-  textures.Classification.Bind(program);
-  vtkAVSShaderOptions::SetClipUniforms(program, clip);
+  if (!this->Begin(textures, clip, 1.0 / count, error))
+  {
+    return false;
+  }
   // Pass p reads images[p - 1] (pass 1: the scalars, classified) over `in` and writes images[p].
   auto run = [&](int pass, const std::array<int, 3>& in, int zOffset)
   {
-    glBindImageTexture(
-      0, pass > 1 ? (*images[pass - 1])->GetHandle() : 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
-    glBindImageTexture(1, (*images[pass])->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-    glUniform1i(location("u_pass"), pass);
-    glUniform1i(location("u_zOffset"), zOffset);
-    glUniform3i(location("u_dimensions"), in[0], in[1], in[2]);
-    const int axis = pass - 1;
-    const int u = axis == 0 ? in[1] : in[0];
-    const int v = axis == 2 ? in[1] : in[2];
-    glUniform1i(location("u_halfWidth"), halfWidths[axis]);
-    glUniform1i(location("u_targetLength"), l[axis]);
-    glDispatchCompute(static_cast<GLuint>((u + 7) / 8), static_cast<GLuint>((v + 7) / 8), 1);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    this->Dispatch(pass,
+      pass > 1 ? images[pass - 1]->Get() : nullptr,
+      *images[pass],
+      in,
+      zOffset,
+      halfWidths[pass - 1],
+      l[pass - 1]);
   };
   for (int z0 = 0; z0 < d[2]; z0 += slab)
   {
@@ -119,18 +163,24 @@ bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
     run(2, { l[0], d[1], depth }, z0);
   }
   run(3, shapes[2], 0);
-  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
-  glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-  glUseProgram(0);
-  textures.Scalars->Deactivate();
-  textures.Classification.Unbind();
+  const bool ok = this->End(textures, error);
   // Not kept for the next rebuild (issue 16: the memory of a volume at rest is the scalars and
   // the light grid's volumes); allocating them again costs a little on a software rasterizer.
   textures.ReleaseScratch();
-  if (const GLenum status = glGetError())
+  return ok;
+}
+
+bool vtkAVSAveragedExtinctionPass::Classify(vtkAVSVolumeTextures& textures,
+  const std::array<int, 3>& dimensions,
+  const avs::ClipRegion& clip,
+  vtkTextureObject* target,
+  std::string& error)
+{
+  // Pass 1 with a window of one voxel and no shrinking: sigma_t at each voxel.
+  if (!this->Begin(textures, clip, 1.0, error))
   {
-    error = "the averaged-extinction compute pass failed (GL error " + std::to_string(status) + ")";
     return false;
   }
-  return true;
+  this->Dispatch(1, nullptr, target, dimensions, 0, 0, dimensions[0]);
+  return this->End(textures, error);
 }

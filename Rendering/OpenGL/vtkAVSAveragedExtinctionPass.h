@@ -21,6 +21,7 @@
 #include <string>
 
 class vtkAVSVolumeTextures;
+class vtkTextureObject;
 
 class vtkAVSAveragedExtinctionPass
 {
@@ -44,10 +45,34 @@ public:
     const std::array<int, 3>& halfWidths,
     const avs::ClipRegion& clip,
     std::string& error);
+  /// sigma_t at each voxel of the data's grid `dimensions` into `target` (an R32F texture of
+  /// that size), classified from the uploaded scalars as pass 1 classifies them (0 outside
+  /// `clip`): the ambient-occlusion pass's input, so that no extinction grid is made on the CPU.
+  bool Classify(vtkAVSVolumeTextures& textures,
+    const std::array<int, 3>& dimensions,
+    const avs::ClipRegion& clip,
+    vtkTextureObject* target,
+    std::string& error);
   /// Forgets the program, deleting it when its context is current (`context`).
   void ReleaseGraphicsResources(bool context);
 
 private:
+  /// The program made current with the classification and clipping bound.
+  bool Begin(vtkAVSVolumeTextures& textures,
+    const avs::ClipRegion& clip,
+    double inverseCount,
+    std::string& error);
+  /// One pass over the grid `in` (pass 1: the data, or its slab from `zOffset`).
+  void Dispatch(int pass,
+    vtkTextureObject* input,
+    vtkTextureObject* output,
+    const std::array<int, 3>& in,
+    int zOffset,
+    int halfWidth,
+    int targetLength);
+  /// Unbinds, and reports a GL error of the pass.
+  bool End(vtkAVSVolumeTextures& textures, std::string& error);
+
   unsigned int Program = 0; ///< GL name of the averaged-extinction compute program
   /// Classification and packing defines it was built with.
   std::string Defines;

@@ -181,18 +181,32 @@ bool vtkAVSRayCaster::ComputeAveragedExtinction(const std::array<int, 3>& dimens
     this->Textures, dimensions, lightDimensions, halfWidths, clip, error);
 }
 
-bool vtkAVSRayCaster::ComputeOcclusion(const avs::Grid& extinction,
+bool vtkAVSRayCaster::ComputeOcclusion(const avs::GridGeometry& geometry,
   const std::array<int, 3>& dimensions,
   double radius,
   int directions,
+  const avs::ClipRegion& clip,
   std::string& error)
 {
-  if (!this->SupportsComputeShaders() || directions > 256)
+  vtkAVSVolumeTextures& tx = this->Textures;
+  if (!this->SupportsComputeShaders() || directions > 256 || !tx.Scalars ||
+    !tx.Classification.IsUploaded())
   {
-    error = "no compute shaders, or more than 256 directions";
+    error = "no compute shaders, scalars or transfer function, or more than 256 directions";
     return false;
   }
-  return this->OcclusionPass.Run(this->Textures, extinction, dimensions, radius, directions, error);
+  // sigma_t on the data grid, classified on the GPU, for the pass alone.
+  vtkSmartPointer<vtkTextureObject> sigma;
+  if (!tx.UploadGrid(sigma, geometry.Dimensions, 1, nullptr, error))
+  {
+    return false;
+  }
+  const bool done =
+    this->AveragedExtinctionPass.Classify(tx, geometry.Dimensions, clip, sigma, error) &&
+    this->OcclusionPass.Run(tx, geometry, sigma, dimensions, radius, directions, error);
+  tx.NoteTemporary(sigma); // beside the occlusion volume the pass allocated
+  sigma->ReleaseGraphicsResources(this->Window);
+  return done;
 }
 
 bool vtkAVSRayCaster::ComputeLightVolume(int index,

@@ -87,13 +87,15 @@ public:
   /// ... and up to 8 light volumes on the same grid, four to an RGBA texture.
   bool UploadLightVolumes(const std::vector<avs::Grid>& lights, std::string& error);
 
-  /// Ambient occlusion computed on the GPU from the extinction grid into the occlusion texture,
-  /// on the grid `dimensions` over the same box (at most 256 directions). Returns false when the
-  /// context cannot, with the reason.
-  bool ComputeOcclusion(const avs::Grid& extinction,
+  /// Ambient occlusion computed on the GPU into the occlusion texture, on the grid `dimensions`
+  /// over the box of the data grid `geometry` (at most 256 directions), from sigma_t that the
+  /// averaged-extinction program classifies from the uploaded scalars (0 outside `clip`) into a
+  /// texture held for the pass alone. Returns false when the context cannot, with the reason.
+  bool ComputeOcclusion(const avs::GridGeometry& geometry,
     const std::array<int, 3>& dimensions,
     double radius,
     int directions,
+    const avs::ClipRegion& clip,
     std::string& error);
 
   /// The averaged extinction computed on the GPU from the uploaded scalars and transfer function

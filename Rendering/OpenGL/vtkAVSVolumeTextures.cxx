@@ -130,6 +130,12 @@ double vtkAVSVolumeTextures::HeldBytes() const
   return bytes;
 }
 
+void vtkAVSVolumeTextures::NoteTemporary(vtkTextureObject* texture)
+{
+  this->PeakBytes =
+    std::max(this->PeakBytes, this->HeldBytes() + vtkAVSTextureMemory::Bytes(texture));
+}
+
 void vtkAVSVolumeTextures::NotePeak()
 {
   this->PeakBytes = std::max(this->PeakBytes, this->HeldBytes());

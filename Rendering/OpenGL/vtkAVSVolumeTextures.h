@@ -107,6 +107,8 @@ public:
   /// held at once since the last release (the precomputation's scratch grids included).
   double HeldBytes() const;
   double GetPeakBytes() const { return this->PeakBytes; }
+  /// Counts a texture held for one pass (not a member) into the peak, beside those held.
+  void NoteTemporary(vtkTextureObject* texture);
   /// Releases the averaged-extinction pass's intermediate grids (after the pass).
   void ReleaseScratch();
   /// The filter of a volume texture: the nearest voxel or trilinear (the interpolation type).
