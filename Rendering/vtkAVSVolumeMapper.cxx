@@ -14,6 +14,7 @@
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSSceneTranslator.h"
 #include "vtkAVSShaderOptions.h"
+#include "vtkAVSTextureMemory.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkCamera.h"
@@ -312,15 +313,38 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   in.FollowsCamera.resize(in.WorldLights.size(), false);
 
   // Uploads of what changed.
+  const std::array<int, 3> partitions{
+    this->Partitions[0], this->Partitions[1], this->Partitions[2]
+  };
+  // Ambient scattering's bricks hold the voxels its look-ahead reads before their first samples.
+  const std::array<int, 3>& dimensions = in.Scene.Scalars.Geometry.Dimensions;
+  const int largest = in.RayCaster.MaximumTextureSize3D();
+  const bool split = partitions != std::array<int, 3>{ 1, 1, 1 } ||
+    std::any_of(dimensions.begin(), dimensions.end(), [largest](int d) { return d > largest; });
+  const int lookBack = this->GetEffect() == 2 && split
+    ? vtkAVSRayCaster::LookBackVoxels(
+        rp.AmbientRadius, rp.SampleDistance, in.Scene.Scalars.Geometry.Spacing)
+    : 0;
+  if (partitions != in.UploadedPartitions || lookBack != in.UploadedLookBack)
+  {
+    in.ScalarsUploaded = false;
+  }
   if (!in.ScalarsUploaded)
   {
-    if (!in.RayCaster.UploadScalars(in.Scene, in.ScalarType, error))
+    const bool wasBricked = in.RayCaster.IsBricked();
+    if (!in.RayCaster.UploadScalars(in.Scene, in.ScalarType, partitions, lookBack, error))
     {
       vtkErrorMacro("Cannot render: " << error);
       return false;
     }
     in.ScalarsUploaded = true;
+    in.UploadedPartitions = partitions;
+    in.UploadedLookBack = lookBack;
     ++this->NumberOfDataUploads;
+    if (wasBricked || in.RayCaster.IsBricked())
+    {
+      in.TransferUploaded = false; // the mask and validity follow the bricks
+    }
   }
   if (!in.TransferUploaded)
   {
@@ -348,8 +372,9 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   const bool gpuScattering = effect == 2 && this->PrecomputeOnGPU &&
     in.RayCaster.SupportsComputeShaders() &&
     table->Axes.NumberOfTau <= vtkAVSRayCaster::MaximumTauNodes;
-  // (A piece of a larger whole computes its share of the averaged extinction on the CPU.)
-  if (!gpuScattering || this->LitAsPiece)
+  // (A piece of a larger whole computes its share of the averaged extinction on the CPU, and so
+  // does a split volume: the GPU pass reads the unsplit scalars' texture.)
+  if (!gpuScattering || this->LitAsPiece || in.RayCaster.IsBricked())
   {
     this->UpdateExtinction();
   }
@@ -478,6 +503,10 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   const double allocated = volume->GetAllocatedRenderTime();
   const bool adjust = this->AutoAdjustSampleDistances != 0;
   const bool interactive = adjust && allocated < 1.0;
+  // The GPU memory budget of this volume's textures, for its uploads and its draw.
+  const vtkAVSTextureMemory::ScopedBudget budget(this->MaximumGPUMemory > 0
+      ? this->MaximumGPUMemory * 1024.0 * 1024.0
+      : in.RayCaster.ReportedGPUMemoryBytes());
   if (!this->Prepare(renderer, volume, interactive))
   {
     // Nothing of a volume that could not be prepared stays on the GPU (one that does not fit
@@ -492,6 +521,16 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
                                         << " blend mode takes one-component data; this volume has "
                                         << in.Scene.Medium.NumberOfComponents()
                                         << " components (use the composite blend mode)");
+    return;
+  }
+  if (blend.Mode != vtkVolumeMapper::COMPOSITE_BLEND && in.RayCaster.IsBricked())
+  {
+    // Each brick's pass sees a part of the ray: the extreme value, the average, the sum and the
+    // crossings between two samples are not what "over" of the parts gives.
+    vtkErrorMacro("Cannot render: the "
+      << vtkAVSShaderOptions::BlendModeName(this->BlendMode) << " blend mode is not rendered on a "
+      << "volume split into bricks (" << in.RayCaster.GetNumberOfBricks()
+      << "; see SetPartitions): use the composite blend mode, or a volume within one 3D texture");
     return;
   }
   blend.ScalarRange[0] = in.Scene.Transfer.Minimum;
@@ -555,6 +594,7 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     in.SecondsPerRay = seconds / std::max(1.0, static_cast<double>(rays[0]) * rays[1]);
   }
   this->LastImageSampleDistance = static_cast<float>(distance);
+  this->NumberOfBricks = in.RayCaster.GetNumberOfBricks();
   ++this->NumberOfRenderedFrames;
   if (interactive)
   {
@@ -618,6 +658,15 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfDiffusionRebuilds: " << this->NumberOfDiffusionRebuilds << "\n";
   os << indent << "NumberOfRenderedFrames: " << this->NumberOfRenderedFrames << "\n";
   os << indent << "NumberOfInteractiveFrames: " << this->NumberOfInteractiveFrames << "\n";
+  os << indent << "MaximumGPUMemory: " << this->MaximumGPUMemory
+     << (this->MaximumGPUMemory > 0 ? " MiB" : " (what the OpenGL context reports)") << "\n";
+  os << indent << "Partitions: (" << this->Partitions[0] << ", " << this->Partitions[1] << ", "
+     << this->Partitions[2] << ")"
+     << (this->Partitions[0] * this->Partitions[1] * this->Partitions[2] == 1
+            ? " (automatic: split where the 3D-texture limit needs it)"
+            : "")
+     << "\n";
+  os << indent << "NumberOfBricks: " << this->NumberOfBricks << "\n";
   os << indent << "GPUMemoryBytes: " << this->GetGPUMemoryBytes() << "\n";
   os << indent << "GPUMemoryPeakBytes: " << this->GetGPUMemoryPeakBytes() << "\n";
 }
@@ -630,4 +679,18 @@ double vtkAVSVolumeMapper::GetGPUMemoryBytes() const
 double vtkAVSVolumeMapper::GetGPUMemoryPeakBytes() const
 {
   return this->Internal->RayCaster.PeakVolumeTextureBytes();
+}
+
+void vtkAVSVolumeMapper::SetPartitions(int x, int y, int z)
+{
+  x = std::max(1, x);
+  y = std::max(1, y);
+  z = std::max(1, z);
+  if (x != this->Partitions[0] || y != this->Partitions[1] || z != this->Partitions[2])
+  {
+    this->Partitions[0] = x;
+    this->Partitions[1] = y;
+    this->Partitions[2] = z;
+    this->Modified();
+  }
 }

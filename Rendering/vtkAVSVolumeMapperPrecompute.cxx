@@ -119,8 +119,11 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
     in.PieceOffset[0],
     in.PieceOffset[1],
     in.PieceOffset[2] };
+  // The GPU pass reads the unsplit scalars' texture: a split volume's is computed on the CPU
+  // (its box sums would need every brick; ARCHITECTURE.md, "Bricking").
+  const bool gpuAveraged = gpuScattering && !in.RayCaster.IsBricked();
   if (in.AveragedKey[0] != in.DataVersion || in.AveragedKey[1] != in.OpacityVersion ||
-    in.AveragedRadius != rp.AmbientRadius || in.AveragedOnGPU != (gpuScattering ? 1 : 0) ||
+    in.AveragedRadius != rp.AmbientRadius || in.AveragedOnGPU != (gpuAveraged ? 1 : 0) ||
     in.AveragedDimensions != lightGrid.Dimensions || in.AveragedPiece != piece ||
     in.AveragedSum != in.SumVersion)
   {
@@ -135,7 +138,7 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
         return false;
       }
     }
-    else if (gpuScattering)
+    else if (gpuAveraged)
     {
       if (!in.RayCaster.ComputeAveragedExtinction(g.Dimensions,
             lightGrid.Dimensions,
@@ -158,7 +161,7 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
     }
     in.AveragedKey[0] = in.DataVersion;
     in.AveragedKey[1] = in.OpacityVersion;
-    in.AveragedOnGPU = gpuScattering ? 1 : 0;
+    in.AveragedOnGPU = gpuAveraged ? 1 : 0;
     in.AveragedRadius = rp.AmbientRadius;
     in.AveragedDimensions = lightGrid.Dimensions;
     in.AveragedPiece = piece;

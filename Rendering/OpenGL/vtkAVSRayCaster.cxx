@@ -15,6 +15,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <cmath>
 
 vtkAVSRayCaster::vtkAVSRayCaster() = default;
 
@@ -60,6 +61,7 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
   this->OcclusionPass.ReleaseGraphicsResources(context != nullptr);
   this->AveragedExtinctionPass.ReleaseGraphicsResources(context != nullptr);
   this->ComputeSupport = -1; // asked again in the next context
+  this->ReportedMemory = -1.0;
   if (window == this->Window)
   {
     this->Window = nullptr;
@@ -78,9 +80,64 @@ int vtkAVSRayCaster::MaximumTextureSize3D() const
 // The uploads: vtkAVSVolumeTextures.
 bool vtkAVSRayCaster::UploadScalars(const avs::VolumeScene& scene,
   int scalarType,
+  const std::array<int, 3>& partitions,
+  int lookBack,
   std::string& error)
 {
-  return this->Textures.UploadScalars(scene, scalarType, error);
+  return this->Textures.UploadScalars(scene, scalarType, partitions, lookBack, error);
+}
+
+int vtkAVSRayCaster::LookBackVoxels(double radius, double sampleDistance, const avs::Vec3& spacing)
+{
+  const double smallest = std::min({ spacing.x, spacing.y, spacing.z });
+  return smallest > 0.0 ? static_cast<int>(std::ceil((radius + sampleDistance) / smallest)) : 0;
+}
+
+int vtkAVSRayCaster::GetNumberOfBricks() const
+{
+  const vtkAVSVolumeTextures& tx = this->Textures;
+  return tx.Bricks.IsSplit() ? tx.Bricks.GetNumberOfBricks() : (tx.Scalars ? 1 : 0);
+}
+
+double vtkAVSRayCaster::ReportedGPUMemoryBytes()
+{
+  if (this->ReportedMemory >= 0.0)
+  {
+    return this->ReportedMemory;
+  }
+  this->ReportedMemory = 0.0;
+  if (!this->Window)
+  {
+    return 0.0;
+  }
+  // Both report kibibytes; queried only where the extension is there (an unknown enum is an
+  // error, cleared below).
+  auto supported = [](const char* name)
+  {
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i)
+    {
+      const char* e = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, i));
+      if (e && std::string(e) == name)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  GLint kib[4] = { 0, 0, 0, 0 };
+  if (supported("GL_NVX_gpu_memory_info"))
+  {
+    glGetIntegerv(0x9047, kib); // GPU_MEMORY_INFO_DEDICATED_VIDMEM_NVX
+  }
+  else if (supported("GL_ATI_meminfo"))
+  {
+    glGetIntegerv(0x87FC, kib); // TEXTURE_FREE_MEMORY_ATI: total free, largest block, ...
+  }
+  vtkAVSRenderPasses::DiscardErrors();
+  this->ReportedMemory = kib[0] > 0 ? kib[0] * 1024.0 : 0.0;
+  return this->ReportedMemory;
 }
 
 bool vtkAVSRayCaster::UploadClassification(const avs::VolumeScene& scene, std::string& error)
@@ -220,7 +277,8 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
 {
   vtkOpenGLRenderWindow* window = this->Window;
   vtkAVSVolumeTextures& tx = this->Textures;
-  if (!window || !tx.Scalars || !tx.Classification.IsUploaded())
+  const bool bricked = tx.Bricks.IsSplit();
+  if (!window || !(tx.Scalars || bricked) || !tx.Classification.IsUploaded())
   {
     error = "nothing uploaded";
     return false;
@@ -236,7 +294,8 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
         vtkAVSShaderAssembly::RayCastDefines(
           frame.Mode, frame.Parameters, frame.Lights, static_cast<int>(tx.TableSize[1]), layout) +
           vtkAVSShaderOptions::ClipDefines(frame.Clip) +
-          (blend ? vtkAVSShaderOptions::BlendDefines(frame.Blend) : std::string())))
+          (blend ? vtkAVSShaderOptions::BlendDefines(frame.Blend) : std::string()) +
+          (bricked ? "#define AVS_BRICKED\n" : "")))
   {
     error = "the ray-casting shader did not compile or link (see the log above)";
     return false;
@@ -266,10 +325,37 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   }
   program->SetUniformi("u_depth", depth->GetTextureUnit());
   // The volume and its classification (avs_classify.glsl), with the interpolation type's filter.
-  vtkAVSVolumeTextures::SetVolumeFilter(tx.Scalars, layout.Nearest);
-  tx.Scalars->Activate();
-  program->SetUniformi("u_scalars", tx.Scalars->GetTextureUnit());
+  if (!bricked)
+  {
+    vtkAVSVolumeTextures::SetVolumeFilter(tx.Scalars, layout.Nearest);
+    tx.Scalars->Activate();
+    program->SetUniformi("u_scalars", tx.Scalars->GetTextureUnit());
+  }
   tx.Classification.Bind(static_cast<unsigned int>(program->GetHandle()));
+  // The pass: one quad, or one per brick back to front (vtkAVSBricks), each composited over
+  // what the bricks behind it left.
+  const std::vector<int> order = bricked
+    ? tx.Bricks.BackToFront(vtkAVSFrameUniforms::EyeInIndexFrame(renderer, frame))
+    : std::vector<int>();
+  auto drawPass = [&]
+  {
+    if (!bricked)
+    {
+      this->Quad->Render();
+      return;
+    }
+    for (int b : order)
+    {
+      vtkTextureObject* texture = tx.BrickTextures[static_cast<std::size_t>(b)];
+      vtkAVSVolumeTextures::SetVolumeFilter(texture, layout.Nearest);
+      texture->Activate();
+      program->SetUniformi("u_scalars", texture->GetTextureUnit());
+      vtkAVSFrameUniforms::SetBrick(program, tx.Bricks.GetBricks()[static_cast<std::size_t>(b)]);
+      tx.Classification.BindBrick(static_cast<unsigned int>(program->GetHandle()), b);
+      this->Quad->Render();
+      texture->Deactivate();
+    }
+  };
 
   if (frame.Mode == avs::RenderMode::AmbientOcclusion)
   {
@@ -370,7 +456,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
           [&]
           {
             cache->ReadyShaderProgram(program);
-            this->Quad->Render();
+            drawPass();
           }))
     {
       this->LastPassSize = { this->ImageSampler.GetTargetWidth(),
@@ -379,7 +465,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     else
     {
       state->vtkglViewport(x, y, width, height);
-      this->Quad->Render();
+      drawPass();
       this->LastPassSize = { width, height };
     }
   }

@@ -4,6 +4,7 @@
 #include "vtkType.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -40,11 +41,32 @@ std::string Mebibytes(double bytes)
 }
 } // namespace
 
+namespace
+{
+double MapperBudget = 0.0; // ScopedBudget's
+}
+
+vtkAVSTextureMemory::ScopedBudget::ScopedBudget(double bytes)
+  : Previous(MapperBudget)
+{
+  MapperBudget = bytes > 0.0 ? bytes : 0.0;
+}
+
+vtkAVSTextureMemory::ScopedBudget::~ScopedBudget()
+{
+  MapperBudget = this->Previous;
+}
+
 double vtkAVSTextureMemory::LimitBytes()
 {
   const char* text = std::getenv("AVS_GPU_MEMORY_LIMIT_MB");
   const double mebibytes = text ? std::atof(text) : 0.0;
-  return mebibytes > 0.0 ? mebibytes * 1024.0 * 1024.0 : 0.0;
+  const double environment = mebibytes > 0.0 ? mebibytes * 1024.0 * 1024.0 : 0.0;
+  if (environment > 0.0 && MapperBudget > 0.0)
+  {
+    return std::min(environment, MapperBudget);
+  }
+  return environment > 0.0 ? environment : MapperBudget;
 }
 
 double vtkAVSTextureMemory::Bytes(const std::array<int, 3>& d,
@@ -91,6 +113,7 @@ bool vtkAVSTextureMemory::Admit(const std::vector<vtkTextureObject*>& held,
   error = "out of GPU memory: a " + std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " +
     std::to_string(d[2]) + " texture of " + std::to_string(components) + " channel" +
     (components > 1 ? "s" : "") + " needs " + Mebibytes(needed) + " beside the " + Mebibytes(kept) +
-    " this volume holds, more than the " + Mebibytes(limit) + " allowed (AVS_GPU_MEMORY_LIMIT_MB)";
+    " this volume holds, more than the " + Mebibytes(limit) +
+    " allowed (the GPU memory budget: SetMaximumGPUMemory, AVS_GPU_MEMORY_LIMIT_MB)";
   return false;
 }
