@@ -320,9 +320,9 @@ public:
    * "Bricking"). (1, 1, 1) (default): automatic, split only along the axes longer than the
    * context's largest 3D texture (GL_MAX_3D_TEXTURE_SIZE). A mask and a separate validity
    * texture are split the same way; the precomputation stays on its coarse grids (a split
-   * volume's averaged extinction is computed on the CPU). A split volume renders the composite
-   * blend mode only (the other blend modes report an error and draw nothing). Each value is at
-   * least 1.
+   * volume's averaged extinction and occlusion volume are computed on the CPU). A split volume
+   * renders the composite blend mode only (the other blend modes report an error and draw nothing).
+   * Each value is at least 1.
    */
   void SetPartitions(int x, int y, int z);
   vtkGetVector3Macro(Partitions, int);

@@ -45,8 +45,10 @@ bool vtkAVSVolumeMapper::PrepareOcclusion()
     in.OcclusionDimensions != occlusionGrid.Dimensions || !in.OcclusionUploaded)
   {
     this->UpdateProgress(0.0);
+    // (The GPU pass uploads the extinction on the data's grid as one texture: a split volume's
+    // occlusion is computed on the CPU.)
     const bool gpu = this->PrecomputeOnGPU && in.RayCaster.SupportsComputeShaders() &&
-      rp.NumberOfDirections <= 256;
+      rp.NumberOfDirections <= 256 && !in.RayCaster.IsBricked();
     if (gpu)
     {
       if (!in.RayCaster.ComputeOcclusion(in.Extinction,

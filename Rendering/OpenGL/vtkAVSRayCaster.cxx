@@ -333,7 +333,8 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   }
   tx.Classification.Bind(static_cast<unsigned int>(program->GetHandle()));
   // The pass: one quad, or one per brick back to front (vtkAVSBricks), each composited over
-  // what the bricks behind it left.
+  // what the bricks behind it left, in the image sampler's half-float target (at every image
+  // sample distance: the framebuffer's 8 bits would round each brick's composite).
   const std::vector<int> order = bricked
     ? tx.Bricks.BackToFront(vtkAVSFrameUniforms::EyeInIndexFrame(renderer, frame))
     : std::vector<int>();
@@ -444,10 +445,12 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     vtkAVSRenderPasses::ScopedCompositing compositing(state);
     vtkOpenGLState::ScopedglViewport viewportGuard(state);
     vtkAVSRenderPasses::ScopedDrawBuffer target(state, frame.PeelingFront ? 1 : 0);
-    // At an image sample distance other than 1 the pass goes through an offscreen target and is
-    // composited from it; at 1, or when that target cannot be made, straight into the viewport.
+    // At an image sample distance other than 1 (and for a split volume) the pass goes through an
+    // offscreen target and is composited from it; otherwise, or when that target cannot be made,
+    // straight into the viewport.
     vtkOpenGLShaderCache* cache = window->GetShaderCache();
-    if (this->ImageSampler.Draw(window,
+    if (this->ImageSampler.Draw(
+          window,
           x,
           y,
           width,
@@ -457,7 +460,8 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
           {
             cache->ReadyShaderProgram(program);
             drawPass();
-          }))
+          },
+          bricked))
     {
       this->LastPassSize = { this->ImageSampler.GetTargetWidth(),
         this->ImageSampler.GetTargetHeight() };

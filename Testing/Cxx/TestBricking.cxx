@@ -162,6 +162,19 @@ int main(int argc, char* argv[])
     { "as_1light", points, plain, Factory<AS>(), 1, 0 },
     { "as_4lights_cpu", points, plain, Factory<AS>([](AS* m) { m->PrecomputeOnGPUOff(); }), 4, 0 },
     { "as_4lights", points, plain, Factory<AS>(), 4, 0 },
+    // (Clipped, the GPU and the CPU averaged extinction of the unsplit volume differ by 55 dB,
+    // so this one compares the CPU precomputation of both.)
+    { "as_clipped_cpu",
+      points,
+      plain,
+      Factory<AS>(
+        [&](AS* m)
+        {
+          m->SetClippingPlanes(planes);
+          m->PrecomputeOnGPUOff();
+        }),
+      4,
+      0 },
     { "as_cells_clipped",
       cells,
       plain,
