@@ -8,11 +8,12 @@
  * planes c_k (the outer bricks reach out to the volume's box, the border of cell data included),
  * and its texture holds the voxels [c_k - g, c_{k+1} + g] (clamped to the volume): the layer at
  * c_{k+1} is shared with the next brick, so that trilinear interpolation (and the nearest voxel)
- * at every owned sample reads the same voxels as in the unsplit texture, and g = 1 more layer
- * on either side when a gradient opacity reads the neighbours (central differences, one voxel
- * away). The ray caster draws the bricks back to front (BackToFront), each ray clipped to the
- * brick's owned box, samples at the unsplit ray's positions (ARCHITECTURE.md, "Bricking").
- * No OpenGL here.
+ * at every owned sample reads the same voxels as in the unsplit texture; g more layers on
+ * either side hold what a pass reads beyond its owned box: 1 for a gradient opacity (central
+ * differences, one voxel away), and for ambient scattering the voxels of the look-ahead's
+ * priming before a brick's first sample (vtkAVSRayCaster::LookBackVoxels). The ray caster draws the
+ * bricks back to front (BackToFront), each ray clipped to the brick's owned box, samples at the
+ * unsplit ray's positions (ARCHITECTURE.md, "Bricking"). No OpenGL here.
  */
 #ifndef vtkAVSBricks_h
 #define vtkAVSBricks_h

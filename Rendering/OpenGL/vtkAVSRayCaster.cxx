@@ -3,6 +3,7 @@
 #include "vtkAVSFrameUniforms.h"
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSShaderAssembly.h"
+#include "vtkAVSTextureMemory.h"
 
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -110,33 +111,7 @@ double vtkAVSRayCaster::ReportedGPUMemoryBytes()
   {
     return 0.0;
   }
-  // Both report kibibytes; queried only where the extension is there (an unknown enum is an
-  // error, cleared below).
-  auto supported = [](const char* name)
-  {
-    GLint count = 0;
-    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
-    for (GLint i = 0; i < count; ++i)
-    {
-      const char* e = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, i));
-      if (e && std::string(e) == name)
-      {
-        return true;
-      }
-    }
-    return false;
-  };
-  GLint kib[4] = { 0, 0, 0, 0 };
-  if (supported("GL_NVX_gpu_memory_info"))
-  {
-    glGetIntegerv(0x9047, kib); // GPU_MEMORY_INFO_DEDICATED_VIDMEM_NVX
-  }
-  else if (supported("GL_ATI_meminfo"))
-  {
-    glGetIntegerv(0x87FC, kib); // TEXTURE_FREE_MEMORY_ATI: total free, largest block, ...
-  }
-  vtkAVSRenderPasses::DiscardErrors();
-  this->ReportedMemory = kib[0] > 0 ? kib[0] * 1024.0 : 0.0;
+  this->ReportedMemory = vtkAVSTextureMemory::ReportedBytes();
   return this->ReportedMemory;
 }
 

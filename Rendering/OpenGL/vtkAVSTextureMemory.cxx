@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 namespace
 {
@@ -116,4 +117,37 @@ bool vtkAVSTextureMemory::Admit(const std::vector<vtkTextureObject*>& held,
     " this volume holds, more than the " + Mebibytes(limit) +
     " allowed (the GPU memory budget: SetMaximumGPUMemory, AVS_GPU_MEMORY_LIMIT_MB)";
   return false;
+}
+
+double vtkAVSTextureMemory::ReportedBytes()
+{
+  // Both report kibibytes; asked only where the extension is there (an unknown enum would be an
+  // error; whatever the query left is cleared below).
+  auto supported = [](const char* name)
+  {
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i)
+    {
+      const char* e = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, i));
+      if (e && std::string(e) == name)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  GLint kib[4] = { 0, 0, 0, 0 };
+  if (supported("GL_NVX_gpu_memory_info"))
+  {
+    glGetIntegerv(0x9047, kib); // GPU_MEMORY_INFO_DEDICATED_VIDMEM_NVX
+  }
+  else if (supported("GL_ATI_meminfo"))
+  {
+    glGetIntegerv(0x87FC, kib); // TEXTURE_FREE_MEMORY_ATI: total free, largest block, ...
+  }
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
+  {
+  }
+  return kib[0] > 0 ? kib[0] * 1024.0 : 0.0;
 }

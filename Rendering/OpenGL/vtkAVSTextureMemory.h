@@ -28,6 +28,10 @@ public:
   /// (ScopedBudget) where each is set (0: none).
   static double LimitBytes();
 
+  /// The GPU memory the current context reports, in bytes: GL_NVX_gpu_memory_info's dedicated
+  /// video memory, or GL_ATI_meminfo's free texture memory; 0 where it reports neither.
+  static double ReportedBytes();
+
   /// The budget of the mapper whose frame is being prepared and drawn
   /// (vtkAVSVolumeMapper::SetMaximumGPUMemory, or what the context reports), in bytes (0: none),
   /// for the lifetime of this object (the mapper's Render; rendering runs on one thread).
