@@ -64,8 +64,10 @@ float g_column[AVS_NUMBER_OF_LIGHTS * AVS_TABLE_COLUMN];
 #endif
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 float g_ring[AVS_RING]; // T at the last AVS_RING samples; AVS_RING is a power of two > k + 1
-// Samples before the ray's first whose T the ring holds (a brick's look-back, below).
+// Samples before the ray's first whose T the ring holds (a brick's look-back, below), and T
+// before the unsplit ray's start relative to this ray's (1 where they are the same).
 int g_prefix = 0;
+float g_before = 1.0;
 #endif
 
 // The table's theta coordinate, sqrt(theta / pi) (denser near theta = 0).
@@ -209,6 +211,9 @@ bool EffectContinues(float T, int i)
       behind = min(behind / exp(-s0.a * dt), 1.0 / max(u_termination, 1e-6));
       g_ring[(AVS_RING - j) & (AVS_RING - 1)] = behind;
     }
+    // Where the look-back reached the unsplit ray's start (brickFirst < k + 1), T before it is
+    // 1, relative to this brick's start the last value.
+    g_before = behind;
   }
 #endif
 //AVS::Effect::Sample
@@ -229,10 +234,11 @@ bool EffectContinues(float T, int i)
 #endif
 #ifndef AVS_LOOKAHEAD_EXPLICIT
     g_ring[i & (AVS_RING - 1)] = T;
-    // T at the samples k and k + 1 back; 1 before the ray's start.
-    float newer = i >= g_lag - g_prefix ? g_ring[(i - g_lag + AVS_RING) & (AVS_RING - 1)] : 1.0;
+    // T at the samples k and k + 1 back; 1 before the ray's start (g_before: a brick's).
+    float newer =
+      i >= g_lag - g_prefix ? g_ring[(i - g_lag + AVS_RING) & (AVS_RING - 1)] : g_before;
     float older =
-      i > g_lag - g_prefix ? g_ring[(i - g_lag - 1 + AVS_RING) & (AVS_RING - 1)] : 1.0;
+      i > g_lag - g_prefix ? g_ring[(i - g_lag - 1 + AVS_RING) & (AVS_RING - 1)] : g_before;
     if (here.a > 0.0 && older >= u_termination)
     {
       float lagged = mix(newer, older, g_lagFraction);
