@@ -2,7 +2,8 @@
 // volume rendered unsplit and split into forced partitions, (2, 2, 2) and (3, 1, 2), must give
 // the unsplit picture (>= 55 dB) for emission-absorption (point data, cell data, 16-bit scalars,
 // a clipping plane, a binary mask, a gradient opacity, nearest interpolation, jittering, a
-// parallel projection, a camera on the other side), ambient occlusion and ambient scattering
+// parallel projection, a camera on the other side and one inside the volume, opaque geometry
+// through it, an image sample distance of 2), ambient occlusion and ambient scattering
 // with 1 and 4 lights (the GPU precomputation of the unsplit volume, and the CPU one of both:
 // a split volume's averaged extinction is computed on the CPU); the split renders really use
 // several bricks. A budget too small for the
@@ -11,11 +12,14 @@
 #include "DataTestScene.h"
 #include "TestErrorObserver.h"
 
+#include "vtkActor.h"
 #include "vtkAmbientOcclusionVolumeMapper.h"
 #include "vtkAmbientScatteringVolumeMapper.h"
 #include "vtkEmissionAbsorptionVolumeMapper.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <functional>
@@ -128,7 +132,8 @@ int main(int argc, char* argv[])
     vtkVolumeProperty* Property;
     MapperFactory Make;
     int Lights;
-    int View; // 0 the test camera, 1 the other side, 2 parallel projection
+    int View; // 0 the test camera, 1 the other side, 2 parallel projection, 3 inside the volume
+    bool Geometry = false; // an opaque sphere through the volume
   };
   using EA = vtkEmissionAbsorptionVolumeMapper;
   using AS = vtkAmbientScatteringVolumeMapper;
@@ -141,6 +146,14 @@ int main(int argc, char* argv[])
     { "ea_nearest", shorts, nearest, Factory<EA>(), 2, 0 },
     { "ea_other_side", points, plain, Factory<EA>(), 2, 1 },
     { "ea_parallel", points, plain, Factory<EA>(), 2, 2 },
+    { "ea_inside", points, plain, Factory<EA>(), 2, 3 },
+    { "ea_geometry", points, plain, Factory<EA>(), 2, 0, true },
+    { "ea_sampled",
+      points,
+      plain,
+      Factory<EA>([](EA* m) { m->SetImageSampleDistance(2.0); }),
+      2,
+      0 },
     { "ea_clipped",
       points,
       plain,
@@ -192,6 +205,25 @@ int main(int argc, char* argv[])
     {
       camera->SetPosition(-2.2, -1.6, -4.6);
     }
+    else if (c.View == 3)
+    {
+      camera->SetPosition(0.15, 0.1, 0.35); // inside the shell, in the brick of the centre
+      camera->SetFocalPoint(0.9, -0.5, -1.0);
+      camera->SetViewAngle(70);
+    }
+    vtkNew<vtkSphereSource> sphereSource;
+    sphereSource->SetCenter(0.3, -0.2, 0.1);
+    sphereSource->SetRadius(0.35);
+    sphereSource->SetThetaResolution(32);
+    sphereSource->SetPhiResolution(32);
+    vtkNew<vtkPolyDataMapper> sphereMapper;
+    sphereMapper->SetInputConnection(sphereSource->GetOutputPort());
+    vtkNew<vtkActor> sphere;
+    sphere->SetMapper(sphereMapper);
+    if (c.Geometry)
+    {
+      renderer->AddActor(sphere);
+    }
     camera->SetParallelProjection(c.View == 2);
     camera->SetParallelScale(1.2);
     auto unsplit = c.Make();
@@ -218,6 +250,7 @@ int main(int argc, char* argv[])
     }
     std::cout << "\n";
     AVS_CHECK(errors->Errors == 0);
+    renderer->RemoveActor(sphere);
   }
   PlaceTestCamera(renderer->GetActiveCamera());
   renderer->GetActiveCamera()->SetParallelProjection(false);
