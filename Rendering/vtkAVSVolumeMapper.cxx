@@ -14,6 +14,7 @@
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSSceneTranslator.h"
 #include "vtkAVSShaderOptions.h"
+#include "vtkAVSTextureMemory.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkCamera.h"
@@ -82,107 +83,12 @@ bool vtkAVSVolumeMapper::PrepareScene(vtkVolume* volume)
   auto& in = *this->Internal;
   std::string error;
 
-  // The input, converted and checked when it changed.
-  if (vtkAlgorithm* producer = this->GetInputAlgorithm())
-  {
-    producer->Update();
-  }
-  vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
+  // The input and the mask, converted and checked when they changed
+  // (vtkAVSVolumeMapperData.cxx).
+  vtkImageData* input = this->PrepareInput();
   if (!input)
   {
-    if (vtkDataSet* other = this->GetInput())
-    {
-      vtkErrorMacro("Cannot render: no input image data (the input is a "
-        << other->GetClassName()
-        << "; these mappers take vtkImageData: resample it, e.g. with vtkResampleToImage).");
-    }
-    else
-    {
-      vtkErrorMacro("Cannot render: no input image data.");
-    }
     return false;
-  }
-  // The array to draw, as vtkGPUVolumeRayCastMapper selects it.
-  vtkAVSDataTranslator::Selection selection;
-  selection.ScalarMode = this->ScalarMode;
-  selection.ArrayAccessMode = this->ArrayAccessMode;
-  selection.ArrayId = this->ArrayId;
-  selection.ArrayName = this->ArrayName ? this->ArrayName : "";
-  bool cellData = false;
-  vtkDataArray* array = vtkAVSDataTranslator::Select(input, selection, cellData, error);
-  auto forget = [&in]()
-  {
-    in.DataObject = nullptr;
-    in.Scene = avs::VolumeScene();
-    in.SourceArray = nullptr;
-  };
-  if (!array)
-  {
-    forget();
-    vtkErrorMacro("Cannot render: " << error);
-    return false;
-  }
-  const bool sameSelection = selection.ScalarMode == in.Selection.ScalarMode &&
-    selection.ArrayAccessMode == in.Selection.ArrayAccessMode &&
-    selection.ArrayId == in.Selection.ArrayId && selection.ArrayName == in.Selection.ArrayName;
-  if (input != in.DataObject || input->GetMTime() != in.DataTime || array != in.ArrayObject ||
-    array->GetMTime() != in.ArrayTime || !sameSelection ||
-    (in.Scene.Scalars.Values.empty() && !in.SourceArray))
-  {
-    // The values stay in the array where they can (Volume::Deferred): the upload converts them
-    // slab by slab, and only the CPU's precomputation copies them (EnsureHostScalars).
-    vtkAVSDataTranslator::Volume data;
-    std::string warning;
-    in.SourceArray = nullptr;
-    if (!vtkAVSDataTranslator::ToVolume(input, selection, data, error, warning, true))
-    {
-      forget();
-      vtkErrorMacro("Cannot render: " << error);
-      return false;
-    }
-    if (!warning.empty())
-    {
-      vtkWarningMacro(<< warning << ".");
-    }
-    in.Scene = avs::VolumeScene();
-    in.Scene.Scalars = std::move(data.Components[0]);
-    for (std::size_t c = 1; c < data.Components.size(); ++c)
-    {
-      in.Scene.Medium.Components.emplace_back();
-      in.Scene.Medium.Components.back().Values = std::move(data.Components[c]);
-    }
-    in.Scene.Medium.Validity = std::move(data.Validity);
-    in.SourceArray = data.Deferred ? data.Array : nullptr;
-    in.ScalarInfinities = data.Infinities;
-    in.Ranges = data.Ranges;
-    in.ScalarType = data.ScalarType;
-    in.DataObject = input;
-    in.DataTime = input->GetMTime();
-    in.ArrayObject = array;
-    in.ArrayTime = array->GetMTime();
-    in.Selection = selection;
-    in.ScalarsUploaded = false;
-    ++in.DataVersion;
-    in.PropertyObject = nullptr; // the scalar range may have changed
-  }
-  // The mask, on the volume's samples.
-  vtkImageData* mask = this->MaskInput;
-  if (mask != in.MaskObject || (mask && mask->GetMTime() != in.MaskTime) ||
-    (mask && in.Scene.Medium.MaskValues.Values.empty()))
-  {
-    in.Scene.Medium.MaskValues = avs::Grid();
-    in.MaskObject = nullptr;
-    if (mask &&
-      !vtkAVSDataTranslator::ToMask(
-        mask, in.Scene.Scalars.Geometry, in.Scene.Medium.MaskValues, error))
-    {
-      vtkErrorMacro("Cannot render: " << error);
-      return false;
-    }
-    in.MaskObject = mask;
-    in.MaskTime = mask ? mask->GetMTime() : 0;
-    ++in.DataVersion; // sigma_t depends on it
-    in.PropertyObject = nullptr;
   }
   vtkVolumeProperty* property = volume->GetProperty();
   if (!property)
@@ -319,15 +225,39 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   in.FollowsCamera.resize(in.WorldLights.size(), false);
 
   // Uploads of what changed.
+  const std::array<int, 3> partitions{
+    this->Partitions[0], this->Partitions[1], this->Partitions[2]
+  };
+  // Ambient scattering's bricks hold the voxels its look-ahead reads before their first samples.
+  const std::array<int, 3>& dimensions = in.Scene.Scalars.Geometry.Dimensions;
+  const int largest = in.RayCaster.MaximumTextureSize3D();
+  const bool split = partitions != std::array<int, 3>{ 1, 1, 1 } ||
+    std::any_of(dimensions.begin(), dimensions.end(), [largest](int d) { return d > largest; });
+  const int lookBack = this->GetEffect() == 2 && split
+    ? vtkAVSRayCaster::LookBackVoxels(
+        rp.AmbientRadius, rp.SampleDistance, in.Scene.Scalars.Geometry.Spacing)
+    : 0;
+  if (partitions != in.UploadedPartitions || lookBack != in.UploadedLookBack)
+  {
+    in.ScalarsUploaded = false;
+  }
   if (!in.ScalarsUploaded)
   {
-    if (!in.RayCaster.UploadScalars(in.Scene, in.ScalarType, in.ScalarSource(), error))
+    const bool wasBricked = in.RayCaster.IsBricked();
+    if (!in.RayCaster.UploadScalars(
+          in.Scene, in.ScalarType, in.ScalarSource(), partitions, lookBack, error))
     {
       vtkErrorMacro("Cannot render: " << error);
       return false;
     }
     in.ScalarsUploaded = true;
+    in.UploadedPartitions = partitions;
+    in.UploadedLookBack = lookBack;
     ++this->NumberOfDataUploads;
+    if (wasBricked || in.RayCaster.IsBricked())
+    {
+      in.TransferUploaded = false; // the mask and validity follow the bricks
+    }
   }
   if (!in.TransferUploaded)
   {
@@ -355,9 +285,10 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   const bool gpuScattering = effect == 2 && this->PrecomputeOnGPU &&
     in.RayCaster.SupportsComputeShaders() &&
     table->Axes.NumberOfTau <= vtkAVSRayCaster::MaximumTauNodes;
-  // (A piece of a larger whole computes its share of the averaged extinction on the CPU.
-  // Ambient occlusion asks for the grid itself where it computes on the CPU.)
-  if (effect == 2 && (!gpuScattering || this->LitAsPiece))
+  // (A piece of a larger whole computes its share of the averaged extinction on the CPU, and so
+  // does a split volume: the GPU pass reads the unsplit scalars' texture. Ambient occlusion asks
+  // for the grid itself where it computes on the CPU.)
+  if (effect == 2 && (!gpuScattering || this->LitAsPiece || in.RayCaster.IsBricked()))
   {
     this->UpdateExtinction();
   }
@@ -367,65 +298,6 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     return this->PrepareOcclusion();
   }
   return this->PrepareScattering(table, gpuScattering, in.WorldToData, interactive);
-}
-
-vtkAVSVolumeTextures::ScalarSource vtkAVSVolumeMapper::Internals::ScalarSource() const
-{
-  vtkAVSVolumeTextures::ScalarSource source;
-  vtkDataArray* array = this->SourceArray;
-  if (!array || !this->Scene.Scalars.Values.empty())
-  {
-    return source; // the scene's grids hold the values
-  }
-  const std::vector<std::array<double, 2>> ranges = this->Ranges;
-  source.Read = [array, ranges](int c, std::size_t begin, std::size_t end, float* out)
-  {
-    vtkAVSDataTranslator::CopyValues(
-      array, c, ranges[c], static_cast<vtkIdType>(begin), static_cast<vtkIdType>(end), out);
-  };
-  // The array's own memory where its values are the texels: unsigned 8 and 16 bits (R8, R16 and
-  // their multi-channel forms hold the tuples as they are), floats without infinities.
-  const int type = array->GetDataType();
-  if (array->HasStandardMemoryLayout() &&
-    (type == VTK_UNSIGNED_CHAR || type == VTK_UNSIGNED_SHORT ||
-      (type == VTK_FLOAT && this->ScalarInfinities == 0)) &&
-    this->Scene.Medium.Validity.Values.empty())
-  {
-    source.Texels = array->GetVoidPointer(0);
-  }
-  return source;
-}
-
-void vtkAVSVolumeMapper::Internals::EnsureHostScalars()
-{
-  if (!this->SourceArray || !this->Scene.Scalars.Values.empty())
-  {
-    return;
-  }
-  const std::size_t n = this->Scene.Scalars.Geometry.NumberOfPoints();
-  for (std::size_t c = 0; c <= this->Scene.Medium.Components.size(); ++c)
-  {
-    avs::Grid& grid = c == 0 ? this->Scene.Scalars : this->Scene.Medium.Components[c - 1].Values;
-    grid.Values.resize(n);
-    vtkAVSDataTranslator::CopyValues(this->SourceArray,
-      static_cast<int>(c),
-      this->Ranges[c],
-      0,
-      static_cast<vtkIdType>(n),
-      grid.Values.data());
-  }
-}
-
-void vtkAVSVolumeMapper::UpdateExtinction()
-{
-  auto& in = *this->Internal;
-  if (in.ExtinctionKey[0] != in.DataVersion || in.ExtinctionKey[1] != in.OpacityVersion)
-  {
-    in.EnsureHostScalars();
-    in.Extinction = avs::ExtinctionGrid(in.Scene);
-    in.ExtinctionKey[0] = in.DataVersion;
-    in.ExtinctionKey[1] = in.OpacityVersion;
-  }
 }
 
 void vtkAVSVolumeMapper::WarnAboutShading(vtkVolumeProperty* property)
@@ -534,6 +406,10 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   const double allocated = volume->GetAllocatedRenderTime();
   const bool adjust = this->AutoAdjustSampleDistances != 0;
   const bool interactive = adjust && allocated < 1.0;
+  // The GPU memory budget of this volume's textures, for its uploads and its draw.
+  const vtkAVSTextureMemory::ScopedBudget budget(this->MaximumGPUMemory > 0
+      ? this->MaximumGPUMemory * 1024.0 * 1024.0
+      : in.RayCaster.ReportedGPUMemoryBytes());
   if (!this->Prepare(renderer, volume, interactive))
   {
     // Nothing of a volume that could not be prepared stays on the GPU (one that does not fit
@@ -548,6 +424,16 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
                                         << " blend mode takes one-component data; this volume has "
                                         << in.Scene.Medium.NumberOfComponents()
                                         << " components (use the composite blend mode)");
+    return;
+  }
+  if (blend.Mode != vtkVolumeMapper::COMPOSITE_BLEND && in.RayCaster.IsBricked())
+  {
+    // Each brick's pass sees a part of the ray: the extreme value, the average, the sum and the
+    // crossings between two samples are not what "over" of the parts gives.
+    vtkErrorMacro("Cannot render: the "
+      << vtkAVSShaderOptions::BlendModeName(this->BlendMode) << " blend mode is not rendered on a "
+      << "volume split into bricks (" << in.RayCaster.GetNumberOfBricks()
+      << "; see SetPartitions): use the composite blend mode, or a volume within one 3D texture");
     return;
   }
   blend.ScalarRange[0] = in.Scene.Transfer.Minimum;
@@ -611,6 +497,7 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     in.SecondsPerRay = seconds / std::max(1.0, static_cast<double>(rays[0]) * rays[1]);
   }
   this->LastImageSampleDistance = static_cast<float>(distance);
+  this->NumberOfBricks = in.RayCaster.GetNumberOfBricks();
   ++this->NumberOfRenderedFrames;
   if (interactive)
   {
@@ -674,6 +561,15 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfDiffusionRebuilds: " << this->NumberOfDiffusionRebuilds << "\n";
   os << indent << "NumberOfRenderedFrames: " << this->NumberOfRenderedFrames << "\n";
   os << indent << "NumberOfInteractiveFrames: " << this->NumberOfInteractiveFrames << "\n";
+  os << indent << "MaximumGPUMemory: " << this->MaximumGPUMemory
+     << (this->MaximumGPUMemory > 0 ? " MiB" : " (what the OpenGL context reports)") << "\n";
+  os << indent << "Partitions: (" << this->Partitions[0] << ", " << this->Partitions[1] << ", "
+     << this->Partitions[2] << ")"
+     << (this->Partitions[0] * this->Partitions[1] * this->Partitions[2] == 1
+            ? " (automatic: split where the 3D-texture limit needs it)"
+            : "")
+     << "\n";
+  os << indent << "NumberOfBricks: " << this->NumberOfBricks << "\n";
   os << indent << "GPUMemoryBytes: " << this->GetGPUMemoryBytes() << "\n";
   os << indent << "GPUMemoryPeakBytes: " << this->GetGPUMemoryPeakBytes() << "\n";
 }
@@ -686,4 +582,18 @@ double vtkAVSVolumeMapper::GetGPUMemoryBytes() const
 double vtkAVSVolumeMapper::GetGPUMemoryPeakBytes() const
 {
   return this->Internal->RayCaster.PeakVolumeTextureBytes();
+}
+
+void vtkAVSVolumeMapper::SetPartitions(int x, int y, int z)
+{
+  x = std::max(1, x);
+  y = std::max(1, y);
+  z = std::max(1, z);
+  if (x != this->Partitions[0] || y != this->Partitions[1] || z != this->Partitions[2])
+  {
+    this->Partitions[0] = x;
+    this->Partitions[1] = y;
+    this->Partitions[2] = z;
+    this->Modified();
+  }
 }

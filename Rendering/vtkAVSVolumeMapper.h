@@ -296,6 +296,43 @@ public:
   double GetGPUMemoryBytes() const;
   double GetGPUMemoryPeakBytes() const;
 
+  ///@{
+  /**
+   * The GPU memory budget of this mapper's volume textures (the same textures
+   * GetGPUMemoryBytes counts), in MiB. 0 (default): what the OpenGL context reports
+   * (GL_NVX_gpu_memory_info's dedicated video memory, or GL_ATI_meminfo's free texture memory),
+   * and no limit where it reports nothing; the environment variable AVS_GPU_MEMORY_LIMIT_MB,
+   * where set, limits it further. A texture that would take the volume past the budget is
+   * refused before anything is allocated: the render reports an error naming the sizes and the
+   * budget, draws nothing, and releases what the volume held. The bricks of a split volume (see
+   * SetPartitions) all stay resident, so they must fit together (they are not streamed).
+   */
+  vtkSetClampMacro(MaximumGPUMemory, int, 0, VTK_INT_MAX);
+  vtkGetMacro(MaximumGPUMemory, int);
+  ///@}
+
+  ///@{
+  /**
+   * Bricking, as vtkOpenGLGPUVolumeRayCastMapper names it: the scalar volume is split into
+   * x * y * z bricks (near-equal voxel ranges per axis sharing one voxel layer, clamped to
+   * the voxels there are), one 3D texture each, drawn back to front with each ray's samples at
+   * the unsplit ray's positions, so the picture agrees with the unsplit one (ARCHITECTURE.md,
+   * "Bricking"). (1, 1, 1) (default): automatic, split only along the axes longer than the
+   * context's largest 3D texture (GL_MAX_3D_TEXTURE_SIZE). A mask and a separate validity
+   * texture are split the same way; the precomputation stays on its coarse grids (a split
+   * volume's averaged extinction and occlusion volume are computed on the CPU). A split volume
+   * renders the composite blend mode only (the other blend modes report an error and draw nothing).
+   * Each value is at least 1.
+   */
+  void SetPartitions(int x, int y, int z);
+  vtkGetVector3Macro(Partitions, int);
+  ///@}
+
+  /**
+   * Bricks the last frame drew (1: unsplit; 0 before the first frame drawn).
+   */
+  vtkGetMacro(NumberOfBricks, int);
+
   /**
    * Renders the volume (called by vtkVolume).
    */
@@ -343,6 +380,8 @@ protected:
   int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
   vtkMultiProcessController* Controller = nullptr;
   vtkTypeBool LitAsPiece = 0;
+  int MaximumGPUMemory = 0;
+  int Partitions[3] = { 1, 1, 1 };
 
   int NumberOfDataUploads = 0;
   int NumberOfExtinctionRebuilds = 0;
@@ -351,6 +390,7 @@ protected:
   int NumberOfOcclusionRebuilds = 0;
   int NumberOfRenderedFrames = 0;
   int NumberOfInteractiveFrames = 0;
+  int NumberOfBricks = 0;
 
 private:
   vtkAVSVolumeMapper(const vtkAVSVolumeMapper&) = delete;
@@ -365,6 +405,9 @@ private:
   /// piece, the parameters, the transforms and the clip region, converted and checked when they
   /// changed (errors reported).
   bool PrepareScene(vtkVolume* volume);
+  /// PrepareScene's first part (vtkAVSVolumeMapperData.cxx): the input image and its mask,
+  /// converted and checked when they changed; null after an error (reported).
+  vtkImageData* PrepareInput();
   /// Prepare's precomputation (vtkAVSVolumeMapperPrecompute.cxx), after the uploads of the data
   /// and the classification: the ambient-occlusion volume; for ambient scattering the table
   /// slice, the averaged extinction, the light volumes (`gpuScattering`: on the GPU) and the

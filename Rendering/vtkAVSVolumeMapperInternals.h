@@ -60,6 +60,8 @@ struct vtkAVSVolumeMapper::Internals
   vtkMTimeType MaskTime = 0;
   int ScalarType = 0;
   bool ScalarsUploaded = false;
+  std::array<int, 3> UploadedPartitions{ 1, 1, 1 }; ///< the Partitions of the last upload
+  int UploadedLookBack = 0; ///< and its look-back voxels (vtkAVSRayCaster::LookBackVoxels)
 
   vtkVolumeProperty* PropertyObject = nullptr;
   vtkMTimeType PropertyTime = 0;

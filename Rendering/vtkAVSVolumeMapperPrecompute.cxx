@@ -45,8 +45,10 @@ bool vtkAVSVolumeMapper::PrepareOcclusion()
     in.OcclusionDimensions != occlusionGrid.Dimensions || !in.OcclusionUploaded)
   {
     this->UpdateProgress(0.0);
+    // (The GPU pass classifies the unsplit scalars' texture: a split volume's occlusion is
+    // computed on the CPU.)
     const bool gpu = this->PrecomputeOnGPU && in.RayCaster.SupportsComputeShaders() &&
-      rp.NumberOfDirections <= 256;
+      rp.NumberOfDirections <= 256 && !in.RayCaster.IsBricked();
     if (gpu)
     {
       if (!in.RayCaster.ComputeOcclusion(g,
@@ -121,8 +123,11 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
     in.PieceOffset[0],
     in.PieceOffset[1],
     in.PieceOffset[2] };
+  // The GPU pass reads the unsplit scalars' texture: a split volume's is computed on the CPU
+  // (its box sums would need every brick; ARCHITECTURE.md, "Bricking").
+  const bool gpuAveraged = gpuScattering && !in.RayCaster.IsBricked();
   if (in.AveragedKey[0] != in.DataVersion || in.AveragedKey[1] != in.OpacityVersion ||
-    in.AveragedRadius != rp.AmbientRadius || in.AveragedOnGPU != (gpuScattering ? 1 : 0) ||
+    in.AveragedRadius != rp.AmbientRadius || in.AveragedOnGPU != (gpuAveraged ? 1 : 0) ||
     in.AveragedDimensions != lightGrid.Dimensions || in.AveragedPiece != piece ||
     in.AveragedSum != in.SumVersion)
   {
@@ -137,7 +142,7 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
         return false;
       }
     }
-    else if (gpuScattering)
+    else if (gpuAveraged)
     {
       if (!in.RayCaster.ComputeAveragedExtinction(g.Dimensions,
             lightGrid.Dimensions,
@@ -160,7 +165,7 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
     }
     in.AveragedKey[0] = in.DataVersion;
     in.AveragedKey[1] = in.OpacityVersion;
-    in.AveragedOnGPU = gpuScattering ? 1 : 0;
+    in.AveragedOnGPU = gpuAveraged ? 1 : 0;
     in.AveragedRadius = rp.AmbientRadius;
     in.AveragedDimensions = lightGrid.Dimensions;
     in.AveragedPiece = piece;

@@ -87,8 +87,72 @@ void vtkAVSClassification::ReleaseTransfer()
   this->TransferHandle = 0;
 }
 
+std::vector<vtkTextureObject*> vtkAVSClassification::VolumeTextures() const
+{
+  std::vector<vtkTextureObject*> held = { this->Mask.Get(), this->Validity.Get() };
+  for (const auto* textures : { &this->MaskBricks, &this->ValidityBricks })
+  {
+    for (vtkTextureObject* t : *textures)
+    {
+      held.push_back(t);
+    }
+  }
+  return held;
+}
+
+void vtkAVSClassification::ReleaseBricks()
+{
+  for (auto* textures : { &this->MaskBricks, &this->ValidityBricks })
+  {
+    for (auto& t : *textures)
+    {
+      if (t && this->Window)
+      {
+        t->ReleaseGraphicsResources(this->Window);
+      }
+    }
+    textures->clear();
+  }
+}
+
+void vtkAVSClassification::BindBrick(unsigned int program, int brick)
+{
+  const std::size_t b = static_cast<std::size_t>(brick);
+  const char* names[2] = { "u_mask", "u_validity" };
+  int which = 0;
+  for (const auto* textures : { &this->MaskBricks, &this->ValidityBricks })
+  {
+    const char* name = names[which++];
+    if (b >= textures->size())
+    {
+      continue;
+    }
+    for (vtkTextureObject* t : *textures)
+    {
+      if (t->GetTextureUnit() >= 0)
+      {
+        t->Deactivate();
+      }
+    }
+    vtkTextureObject* t = (*textures)[b];
+    t->Activate();
+    glUniform1i(glGetUniformLocation(static_cast<GLuint>(program), name), t->GetTextureUnit());
+  }
+  if (b < this->MaskBricks.size())
+  {
+    glUniform1f(glGetUniformLocation(static_cast<GLuint>(program), "u_maskBlend"), this->MaskBlend);
+    glUniform1f(glGetUniformLocation(static_cast<GLuint>(program), "u_labels"), this->Labels);
+  }
+}
+
 void vtkAVSClassification::ReleaseGraphicsResources(vtkWindow* window)
 {
+  if (window)
+  {
+    this->ReleaseBricks();
+  }
+  this->MaskBricks.clear();
+  this->ValidityBricks.clear();
   if (window)
   {
     this->ReleaseTransfer();
@@ -107,6 +171,7 @@ void vtkAVSClassification::ReleaseGraphicsResources(vtkWindow* window)
 
 bool vtkAVSClassification::Upload(const avs::VolumeScene& scene,
   const std::vector<vtkTextureObject*>& callerHeld,
+  const vtkAVSBricks& bricks,
   std::string& error)
 {
   const Layout layout = LayoutOf(scene);
@@ -228,6 +293,46 @@ bool vtkAVSClassification::Upload(const avs::VolumeScene& scene,
   }
   this->MaskBlend = static_cast<float>(std::clamp(m.MaskBlendFactor, 0.0, 1.0));
   this->Labels = static_cast<float>(m.Labels.size());
+  this->ReleaseBricks();
+  if (bricks.IsSplit())
+  {
+    // One mask (and validity) texture per brick, on the scalars' bricks.
+    for (auto* t : { &this->Mask, &this->Validity })
+    {
+      if (*t)
+      {
+        (*t)->ReleaseGraphicsResources(this->Window);
+      }
+      *t = nullptr;
+    }
+    for (const vtkAVSBricks::Brick& brick : bricks.GetBricks())
+    {
+      for (int which = 0; which < 2; ++which)
+      {
+        if (which == 0 ? layout.Mask == 0 : layout.Validity != 2)
+        {
+          continue;
+        }
+        auto& textures = which == 0 ? this->MaskBricks : this->ValidityBricks;
+        std::vector<vtkTextureObject*> held = callerHeld;
+        for (vtkTextureObject* t : this->VolumeTextures())
+        {
+          held.push_back(t);
+        }
+        textures.emplace_back();
+        const avs::Grid part = vtkAVSBricks::Crop(
+          which == 0 ? m.MaskValues : m.Validity, brick.Origin, brick.Dimensions);
+        if (!UploadGrid(
+              this->Window, textures.back(), part, which == 0 || layout.Nearest, held, error))
+        {
+          this->ReleaseBricks();
+          return false;
+        }
+      }
+    }
+    this->Current = layout;
+    return true;
+  }
   std::vector<vtkTextureObject*> held = callerHeld;
   held.push_back(this->Mask);
   held.push_back(this->Validity);
@@ -303,6 +408,16 @@ void vtkAVSClassification::SetValueMap(float scale, float shift)
 
 void vtkAVSClassification::Unbind()
 {
+  for (const auto* textures : { &this->MaskBricks, &this->ValidityBricks })
+  {
+    for (vtkTextureObject* t : *textures)
+    {
+      if (t && t->GetTextureUnit() >= 0)
+      {
+        t->Deactivate();
+      }
+    }
+  }
   for (vtkTextureObject* t : { this->Transfer.Get(), this->Mask.Get(), this->Validity.Get() })
   {
     if (t && t->GetTextureUnit() >= 0)

@@ -12,6 +12,7 @@
 #define vtkAVSClassification_h
 
 #include "ReferenceRenderer.h"
+#include "vtkAVSBricks.h"
 
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h" // for the textures VolumeTextures returns
@@ -52,17 +53,16 @@ public:
 
   /// The tables and uniforms of `scene` (its functions and geometry), the mask and the separate
   /// validity where the layout has them; those two go into the GPU memory budget
-  /// (vtkAVSTextureMemory) beside `held`, the caller's volume textures.
+  /// (vtkAVSTextureMemory) beside `held`, the caller's volume textures. A split volume's
+  /// (`bricks`) mask and validity are split the same way, one texture per brick.
   bool Upload(const avs::VolumeScene& scene,
     const std::vector<vtkTextureObject*>& held,
+    const vtkAVSBricks& bricks,
     std::string& error);
 
-  /// The 3D textures it holds (the mask and the separate validity; null where there is none),
-  /// for the GPU memory budget.
-  std::vector<vtkTextureObject*> VolumeTextures() const
-  {
-    return { this->Mask.Get(), this->Validity.Get() };
-  }
+  /// The 3D textures it holds (the mask and the separate validity, whole or per brick; null
+  /// where there is none), for the GPU memory budget.
+  std::vector<vtkTextureObject*> VolumeTextures() const;
 
   /// How the volume texture's components map back to data values: texel * scale + shift
   /// (vtkAVSTextureUpload::TexelFormat; 1 and 0 for float texels), after Upload.
@@ -70,6 +70,9 @@ public:
   /// Binds the textures and sets the uniforms on the GL program `program` (current).
   void Bind(unsigned int program);
   void Unbind();
+  /// A split volume: binds brick `brick`'s mask and validity in place of the last ones (after
+  /// Bind, the same program current).
+  void BindBrick(unsigned int program, int brick);
 
   const Layout& GetLayout() const { return this->Current; }
   /// Whether Upload has run since the last release.
@@ -80,6 +83,9 @@ private:
   vtkOpenGLRenderWindow* Window = nullptr;
   unsigned int TransferHandle = 0; ///< the 1D array texture's GL name (ours to delete)
   vtkSmartPointer<vtkTextureObject> Transfer, Mask, Validity;
+  /// A split volume's mask and validity, one texture per brick (empty otherwise).
+  std::vector<vtkSmartPointer<vtkTextureObject>> MaskBricks, ValidityBricks;
+  void ReleaseBricks();
   Layout Current;
   float TransferSize[2] = { 1, 1 };
   float RowMap[16] = {};  // value -> x texture coordinate per row

@@ -98,3 +98,50 @@ void vtkAVSFrameUniforms::SetParameters(vtkShaderProgram* program,
     program->SetUniformf("u_ambientRadius", static_cast<float>(p.AmbientRadius));
   }
 }
+
+void vtkAVSFrameUniforms::SetBrick(vtkShaderProgram* program, const vtkAVSBricks::Brick& brick)
+{
+  float low[3], high[3], origin[3], dims[3], step[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    low[a] = static_cast<float>(brick.Low[a]);
+    high[a] = static_cast<float>(brick.High[a]);
+    origin[a] = static_cast<float>(brick.Origin[a]);
+    dims[a] = static_cast<float>(brick.Dimensions[a]);
+    step[a] = 1.0f / dims[a];
+  }
+  program->SetUniform3f("u_brickLow", low);
+  program->SetUniform3f("u_brickHigh", high);
+  program->SetUniform3f("u_brickOrigin", origin);
+  program->SetUniform3f("u_brickDimensions", dims);
+  program->SetUniform3f("u_voxelStep", step); // the classification's, for the whole volume
+}
+
+std::array<double, 3> vtkAVSFrameUniforms::EyeInIndexFrame(vtkRenderer* renderer,
+  const vtkAVSRayCaster::Frame& frame)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double world[4] = { 0, 0, 0, 1 };
+  camera->GetPosition(world);
+  if (camera->GetParallelProjection())
+  {
+    // Far behind the volume's centre: the bricks' order only needs the side of each cut plane.
+    double direction[4] = { 0, 0, 0, 0 };
+    camera->GetDirectionOfProjection(direction);
+    double index[4];
+    frame.WorldToIndex->MultiplyPoint(direction, index);
+    const double length =
+      std::sqrt(index[0] * index[0] + index[1] * index[1] + index[2] * index[2]);
+    const double far = 1e3 * (frame.Dimensions[0] + frame.Dimensions[1] + frame.Dimensions[2]) /
+      std::max(length, 1e-300);
+    std::array<double, 3> eye;
+    for (int a = 0; a < 3; ++a)
+    {
+      eye[a] = 0.5 * (frame.Dimensions[a] - 1) - far * index[a];
+    }
+    return eye;
+  }
+  double index[4];
+  frame.WorldToIndex->MultiplyPoint(world, index);
+  return { index[0] / index[3], index[1] / index[3], index[2] / index[3] };
+}

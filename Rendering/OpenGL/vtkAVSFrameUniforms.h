@@ -30,6 +30,13 @@ public:
   /// The effect's parameters: sampling and termination, the medium (albedo, anisotropy,
   /// emission), AO's weights or ambient scattering's radius, and the jitter.
   static void SetParameters(vtkShaderProgram* program, const vtkAVSRayCaster::Frame& frame);
+  /// A split volume's brick (vtkAVSBricks): its owned box, texture origin and size, and the
+  /// gradient's voxel step in its texture.
+  static void SetBrick(vtkShaderProgram* program, const vtkAVSBricks::Brick& brick);
+  /// Where the bricks are seen from, in the data's continuous index frame: the camera, or for
+  /// a parallel projection a point far behind the volume along the direction of projection.
+  static std::array<double, 3> EyeInIndexFrame(vtkRenderer* renderer,
+    const vtkAVSRayCaster::Frame& frame);
 };
 
 #endif

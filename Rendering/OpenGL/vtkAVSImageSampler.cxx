@@ -108,9 +108,10 @@ bool vtkAVSImageSampler::Draw(vtkOpenGLRenderWindow* window,
   int width,
   int height,
   double distance,
-  const std::function<void()>& pass)
+  const std::function<void()>& pass,
+  bool always)
 {
-  if (distance == 1.0 || !window || width < 1 || height < 1)
+  if ((distance == 1.0 && !always) || !window || width < 1 || height < 1)
   {
     return false;
   }

@@ -36,15 +36,17 @@ public:
   /// Draws `pass` (binds its program and draws it over the current viewport, blending and depth
   /// state as the caller set them) at image sample distance `distance` over the viewport (x, y,
   /// width, height) of the bound draw framebuffer. Returns false having drawn nothing when
-  /// `distance` is 1, or when the target cannot be made (with a warning, once); the caller then
-  /// draws at full resolution.
+  /// `distance` is 1 (unless `always`: a volume split into bricks composites its passes in the
+  /// target's half floats instead of the framebuffer's 8 bits), or when the target cannot be
+  /// made (with a warning, once); the caller then draws at full resolution.
   bool Draw(vtkOpenGLRenderWindow* window,
     int x,
     int y,
     int width,
     int height,
     double distance,
-    const std::function<void()>& pass);
+    const std::function<void()>& pass,
+    bool always = false);
 
   /// Texels of the last target drawn into (rays cast).
   int GetTargetWidth() const { return this->Width; }

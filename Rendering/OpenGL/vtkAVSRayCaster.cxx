@@ -3,6 +3,7 @@
 #include "vtkAVSFrameUniforms.h"
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSShaderAssembly.h"
+#include "vtkAVSTextureMemory.h"
 
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -15,6 +16,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <cmath>
 
 vtkAVSRayCaster::vtkAVSRayCaster() = default;
 
@@ -60,6 +62,7 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
   this->OcclusionPass.ReleaseGraphicsResources(context != nullptr);
   this->AveragedExtinctionPass.ReleaseGraphicsResources(context != nullptr);
   this->ComputeSupport = -1; // asked again in the next context
+  this->ReportedMemory = -1.0;
   if (window == this->Window)
   {
     this->Window = nullptr;
@@ -79,9 +82,38 @@ int vtkAVSRayCaster::MaximumTextureSize3D() const
 bool vtkAVSRayCaster::UploadScalars(const avs::VolumeScene& scene,
   int scalarType,
   const vtkAVSVolumeTextures::ScalarSource& source,
+  const std::array<int, 3>& partitions,
+  int lookBack,
   std::string& error)
 {
-  return this->Textures.UploadScalars(scene, scalarType, source, error);
+  return this->Textures.UploadScalars(scene, scalarType, source, partitions, lookBack, error);
+}
+
+int vtkAVSRayCaster::LookBackVoxels(double radius, double sampleDistance, const avs::Vec3& spacing)
+{
+  const double smallest = std::min({ spacing.x, spacing.y, spacing.z });
+  return smallest > 0.0 ? static_cast<int>(std::ceil((radius + sampleDistance) / smallest)) : 0;
+}
+
+int vtkAVSRayCaster::GetNumberOfBricks() const
+{
+  const vtkAVSVolumeTextures& tx = this->Textures;
+  return tx.Bricks.IsSplit() ? tx.Bricks.GetNumberOfBricks() : (tx.Scalars ? 1 : 0);
+}
+
+double vtkAVSRayCaster::ReportedGPUMemoryBytes()
+{
+  if (this->ReportedMemory >= 0.0)
+  {
+    return this->ReportedMemory;
+  }
+  this->ReportedMemory = 0.0;
+  if (!this->Window)
+  {
+    return 0.0;
+  }
+  this->ReportedMemory = vtkAVSTextureMemory::ReportedBytes();
+  return this->ReportedMemory;
 }
 
 bool vtkAVSRayCaster::UploadClassification(const avs::VolumeScene& scene, std::string& error)
@@ -251,7 +283,8 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
 {
   vtkOpenGLRenderWindow* window = this->Window;
   vtkAVSVolumeTextures& tx = this->Textures;
-  if (!window || !tx.Scalars || !tx.Classification.IsUploaded())
+  const bool bricked = tx.Bricks.IsSplit();
+  if (!window || !(tx.Scalars || bricked) || !tx.Classification.IsUploaded())
   {
     error = "nothing uploaded";
     return false;
@@ -277,7 +310,8 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
           layout,
           packed ? lightCount : -1) +
           vtkAVSShaderOptions::ClipDefines(frame.Clip) +
-          (blend ? vtkAVSShaderOptions::BlendDefines(frame.Blend) : std::string())))
+          (blend ? vtkAVSShaderOptions::BlendDefines(frame.Blend) : std::string()) +
+          (bricked ? "#define AVS_BRICKED\n" : "")))
   {
     error = "the ray-casting shader did not compile or link (see the log above)";
     return false;
@@ -307,10 +341,38 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   }
   program->SetUniformi("u_depth", depth->GetTextureUnit());
   // The volume and its classification (avs_classify.glsl), with the interpolation type's filter.
-  vtkAVSVolumeTextures::SetVolumeFilter(tx.Scalars, layout.Nearest);
-  tx.Scalars->Activate();
-  program->SetUniformi("u_scalars", tx.Scalars->GetTextureUnit());
+  if (!bricked)
+  {
+    vtkAVSVolumeTextures::SetVolumeFilter(tx.Scalars, layout.Nearest);
+    tx.Scalars->Activate();
+    program->SetUniformi("u_scalars", tx.Scalars->GetTextureUnit());
+  }
   tx.Classification.Bind(static_cast<unsigned int>(program->GetHandle()));
+  // The pass: one quad, or one per brick back to front (vtkAVSBricks), each composited over
+  // what the bricks behind it left, in the image sampler's half-float target (at every image
+  // sample distance: the framebuffer's 8 bits would round each brick's composite).
+  const std::vector<int> order = bricked
+    ? tx.Bricks.BackToFront(vtkAVSFrameUniforms::EyeInIndexFrame(renderer, frame))
+    : std::vector<int>();
+  auto drawPass = [&]
+  {
+    if (!bricked)
+    {
+      this->Quad->Render();
+      return;
+    }
+    for (int b : order)
+    {
+      vtkTextureObject* texture = tx.BrickTextures[static_cast<std::size_t>(b)];
+      vtkAVSVolumeTextures::SetVolumeFilter(texture, layout.Nearest);
+      texture->Activate();
+      program->SetUniformi("u_scalars", texture->GetTextureUnit());
+      vtkAVSFrameUniforms::SetBrick(program, tx.Bricks.GetBricks()[static_cast<std::size_t>(b)]);
+      tx.Classification.BindBrick(static_cast<unsigned int>(program->GetHandle()), b);
+      this->Quad->Render();
+      texture->Deactivate();
+    }
+  };
 
   if (frame.Mode == avs::RenderMode::AmbientOcclusion)
   {
@@ -402,10 +464,12 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     vtkAVSRenderPasses::ScopedCompositing compositing(state);
     vtkOpenGLState::ScopedglViewport viewportGuard(state);
     vtkAVSRenderPasses::ScopedDrawBuffer target(state, frame.PeelingFront ? 1 : 0);
-    // At an image sample distance other than 1 the pass goes through an offscreen target and is
-    // composited from it; at 1, or when that target cannot be made, straight into the viewport.
+    // At an image sample distance other than 1 (and for a split volume) the pass goes through an
+    // offscreen target and is composited from it; otherwise, or when that target cannot be made,
+    // straight into the viewport.
     vtkOpenGLShaderCache* cache = window->GetShaderCache();
-    if (this->ImageSampler.Draw(window,
+    if (this->ImageSampler.Draw(
+          window,
           x,
           y,
           width,
@@ -414,8 +478,9 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
           [&]
           {
             cache->ReadyShaderProgram(program);
-            this->Quad->Render();
-          }))
+            drawPass();
+          },
+          bricked))
     {
       this->LastPassSize = { this->ImageSampler.GetTargetWidth(),
         this->ImageSampler.GetTargetHeight() };
@@ -423,7 +488,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     else
     {
       state->vtkglViewport(x, y, width, height);
-      this->Quad->Render();
+      drawPass();
       this->LastPassSize = { width, height };
     }
   }

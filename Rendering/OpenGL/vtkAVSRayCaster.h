@@ -74,11 +74,25 @@ public:
   /// Texture uploads; return false and say why in `error` when the GPU refuses. The volume:
   /// its components (and the validity of NaN data) in one texture, in the texel format of the
   /// array's VTK type `scalarType` (vtkAVSTextureUpload), from the scene's grids or, where they
-  /// hold no values, from `source`.
+  /// hold no values, from `source`. Split into `partitions` bricks per axis ((1, 1, 1): only where
+  /// the 3D-texture limit needs it), one texture each (vtkAVSBricks), drawn back to front;
+  /// `lookBack` more voxel layers around each shared one for ambient scattering (LookBackVoxels).
   bool UploadScalars(const avs::VolumeScene& scene,
     int scalarType,
     const vtkAVSVolumeTextures::ScalarSource& source,
+    const std::array<int, 3>& partitions,
+    int lookBack,
     std::string& error);
+  /// The voxels a brick's rays of ambient scattering read before its first sample: the
+  /// look-ahead's r and one step back (the ring buffer starts there; avs_as_effect.glsl), at
+  /// `spacing`.
+  static int LookBackVoxels(double radius, double sampleDistance, const avs::Vec3& spacing);
+  /// Bricks of the uploaded scalars (1: unsplit, 0: none uploaded) and whether there are more.
+  int GetNumberOfBricks() const;
+  bool IsBricked() const { return this->GetNumberOfBricks() > 1; }
+  /// The GPU memory the context reports (GL_NVX_gpu_memory_info's dedicated video memory, or
+  /// GL_ATI_meminfo's free texture memory), in bytes; 0 where it reports none.
+  double ReportedGPUMemoryBytes();
   /// The classification's tables, mask and uniforms (vtkAVSClassification), after the scalars.
   bool UploadClassification(const avs::VolumeScene& scene, std::string& error);
   /// The CPU's ambient-scattering volumes: the averaged extinction on the light grid (which
@@ -190,7 +204,8 @@ private:
   vtkAVSAveragedExtinctionPass AveragedExtinctionPass;
   vtkAVSLightVolumePass LightVolumePass;
   vtkAVSOcclusionPass OcclusionPass;
-  int ComputeSupport = -1; ///< -1 unknown, 0 no, 1 yes
+  int ComputeSupport = -1;      ///< -1 unknown, 0 no, 1 yes
+  double ReportedMemory = -1.0; ///< ReportedGPUMemoryBytes; -1 not asked in this context
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   int QuadMode = -1;
   std::string QuadDefines;

@@ -4,8 +4,10 @@
 #include "vtkType.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 namespace
 {
@@ -40,11 +42,32 @@ std::string Mebibytes(double bytes)
 }
 } // namespace
 
+namespace
+{
+double MapperBudget = 0.0; // ScopedBudget's
+}
+
+vtkAVSTextureMemory::ScopedBudget::ScopedBudget(double bytes)
+  : Previous(MapperBudget)
+{
+  MapperBudget = bytes > 0.0 ? bytes : 0.0;
+}
+
+vtkAVSTextureMemory::ScopedBudget::~ScopedBudget()
+{
+  MapperBudget = this->Previous;
+}
+
 double vtkAVSTextureMemory::LimitBytes()
 {
   const char* text = std::getenv("AVS_GPU_MEMORY_LIMIT_MB");
   const double mebibytes = text ? std::atof(text) : 0.0;
-  return mebibytes > 0.0 ? mebibytes * 1024.0 * 1024.0 : 0.0;
+  const double environment = mebibytes > 0.0 ? mebibytes * 1024.0 * 1024.0 : 0.0;
+  if (environment > 0.0 && MapperBudget > 0.0)
+  {
+    return std::min(environment, MapperBudget);
+  }
+  return environment > 0.0 ? environment : MapperBudget;
 }
 
 double vtkAVSTextureMemory::Bytes(const std::array<int, 3>& d,
@@ -91,6 +114,40 @@ bool vtkAVSTextureMemory::Admit(const std::vector<vtkTextureObject*>& held,
   error = "out of GPU memory: a " + std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " +
     std::to_string(d[2]) + " texture of " + std::to_string(components) + " channel" +
     (components > 1 ? "s" : "") + " needs " + Mebibytes(needed) + " beside the " + Mebibytes(kept) +
-    " this volume holds, more than the " + Mebibytes(limit) + " allowed (AVS_GPU_MEMORY_LIMIT_MB)";
+    " this volume holds, more than the " + Mebibytes(limit) +
+    " allowed (the GPU memory budget: SetMaximumGPUMemory, AVS_GPU_MEMORY_LIMIT_MB)";
   return false;
+}
+
+double vtkAVSTextureMemory::ReportedBytes()
+{
+  // Both report kibibytes; asked only where the extension is there (an unknown enum would be an
+  // error; whatever the query left is cleared below).
+  auto supported = [](const char* name)
+  {
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i)
+    {
+      const char* e = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, i));
+      if (e && std::string(e) == name)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  GLint kib[4] = { 0, 0, 0, 0 };
+  if (supported("GL_NVX_gpu_memory_info"))
+  {
+    glGetIntegerv(0x9047, kib); // GPU_MEMORY_INFO_DEDICATED_VIDMEM_NVX
+  }
+  else if (supported("GL_ATI_meminfo"))
+  {
+    glGetIntegerv(0x87FC, kib); // TEXTURE_FREE_MEMORY_ATI: total free, largest block, ...
+  }
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
+  {
+  }
+  return kib[0] > 0 ? kib[0] * 1024.0 : 0.0;
 }

@@ -1,5 +1,6 @@
 #include "vtkAVSVolumeTextures.h"
 
+#include "vtkAVSBricks.h"
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSTextureMemory.h"
 #include "vtkAVSTextureUpload.h"
@@ -33,6 +34,8 @@ void vtkAVSVolumeTextures::ReleaseGraphicsResources(vtkWindow* window)
     }
   }
   this->AveragedSlot = -1;
+  this->ReleaseBricks(window);
+  this->Bricks.Clear();
   this->Scalars = this->AveragedExtinction = this->Occlusion = this->Table = nullptr;
   for (auto& t : this->LightVolumes)
   {
@@ -208,11 +211,64 @@ void PackSlab(const avs::VolumeScene& scene,
     }
   }
 }
+
+// Writes the slices [z0, z1) of the sub-box of `dimensions` voxels from `origin` (a brick,
+// vtkAVSBricks) of the scene's channels into `texels` as T, x fastest, each value stored as
+// PackSlab stores it.
+template<typename T>
+void PackBox(const avs::VolumeScene& scene,
+  const vtkAVSVolumeTextures::ScalarSource& source,
+  const vtkAVSClassification::Layout& layout,
+  const vtkAVSTextureUpload::TexelFormat& format,
+  const std::array<int, 3>& origin,
+  const std::array<int, 3>& dimensions,
+  int z0,
+  int z1,
+  T* texels)
+{
+  const std::array<int, 3>& d = scene.Scalars.Geometry.Dimensions;
+  const int channels = layout.ScalarChannels();
+  const double top = static_cast<double>(format.Scale);
+  std::vector<float> read;
+  for (int c = 0; c < channels; ++c)
+  {
+    const std::vector<float>& grid = c == layout.Components ? scene.Medium.Validity.Values
+      : c == 0                                              ? scene.Scalars.Values
+               : scene.Medium.Components[c - 1].Values.Values;
+    T* out = texels + c;
+    for (int z = z0; z < z1; ++z)
+    {
+      for (int y = 0; y < dimensions[1]; ++y)
+      {
+        const std::size_t row = (static_cast<std::size_t>(origin[2] + z) * d[1] + origin[1] + y) *
+            static_cast<std::size_t>(d[0]) +
+          origin[0];
+        // The grid's row, or the row read from the source where the grid holds no values.
+        const float* v = grid.data() + row;
+        if (grid.empty())
+        {
+          read.resize(static_cast<std::size_t>(dimensions[0]));
+          source.Read(c, row, row + dimensions[0], read.data());
+          v = read.data();
+        }
+        for (int x = 0; x < dimensions[0]; ++x, out += channels)
+        {
+          const float value = v[x];
+          *out = format.IsNormalized()
+            ? static_cast<T>(std::lround(std::clamp(format.Encode(value), 0.0, top)))
+            : static_cast<T>(value);
+        }
+      }
+    }
+  }
+}
 } // namespace
 
 bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
   int scalarType,
   const ScalarSource& source,
+  const std::array<int, 3>& partitions,
+  int lookBack,
   std::string& error)
 {
   const vtkAVSClassification::Layout layout = vtkAVSClassification::LayoutOf(scene);
@@ -221,6 +277,32 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
   // it), so those volumes stay floats whatever their type.
   const vtkAVSTextureUpload::TexelFormat format =
     vtkAVSTextureUpload::TexelFormat::ForScalars(scalarType, channels, layout.Validity != 0);
+  const std::array<int, 3>& dimensions = scene.Scalars.Geometry.Dimensions;
+  // Bricks (vtkAVSBricks): the partitions asked for, or (1, 1, 1) the fewest that the
+  // context's 3D-texture limit allows; one more voxel layer around the shared one when a
+  // gradient opacity reads the neighbours, and those ambient scattering's look-back reads before
+  // a brick's first sample (avs_as_effect.glsl).
+  const int ghost = (layout.Gradient != 0 ? 1 : 0) + std::max(0, lookBack);
+  std::array<int, 3> split = partitions;
+  if (split == std::array<int, 3>{ 1, 1, 1 } &&
+    !vtkAVSBricks::PartitionsFor(dimensions, this->MaximumTextureSize3D(), ghost, split, error))
+  {
+    return false;
+  }
+  this->ReleaseBricks(this->Window);
+  this->Bricks.Split(dimensions, split, scene.Scalars.Geometry.Border, ghost);
+  if (this->Bricks.IsSplit())
+  {
+    if (!this->UploadBricks(scene, source, layout, format, error))
+    {
+      this->ReleaseBricks(this->Window);
+      return false;
+    }
+    this->ScalarLayout = layout;
+    this->ScalarFormat = format;
+    this->Classification.SetValueMap(format.Scale, format.Shift);
+    return true;
+  }
   const std::size_t slice = static_cast<std::size_t>(scene.Scalars.Geometry.Dimensions[0]) *
     scene.Scalars.Geometry.Dimensions[1];
   const std::size_t texel = static_cast<std::size_t>(channels) * format.HostBytes();
@@ -274,12 +356,102 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
   return true;
 }
 
+void vtkAVSVolumeTextures::ReleaseBricks(vtkWindow* window)
+{
+  for (auto& t : this->BrickTextures)
+  {
+    if (t && window)
+    {
+      t->ReleaseGraphicsResources(window);
+    }
+  }
+  this->BrickTextures.clear();
+}
+
+bool vtkAVSVolumeTextures::UploadBricks(const avs::VolumeScene& scene,
+  const ScalarSource& source,
+  const vtkAVSClassification::Layout& layout,
+  const vtkAVSTextureUpload::TexelFormat& format,
+  std::string& error)
+{
+  // The unsplit texture goes first, so that the budget counts the bricks alone.
+  if (this->Scalars)
+  {
+    this->Scalars->ReleaseGraphicsResources(this->Window);
+    this->Scalars = nullptr;
+  }
+  const int channels = layout.ScalarChannels();
+  const std::vector<vtkAVSBricks::Brick>& bricks = this->Bricks.GetBricks();
+  this->BrickTextures.resize(bricks.size());
+  for (std::size_t b = 0; b < bricks.size(); ++b)
+  {
+    const vtkAVSBricks::Brick& brick = bricks[b];
+    const vtkAVSTextureUpload::SlabFill fill = [&scene, &source, &layout, &format, &brick](
+                                                 int z0, int z1, void* texels) -> const void*
+    {
+      if (format.HostType == VTK_UNSIGNED_CHAR)
+      {
+        PackBox(scene,
+          source,
+          layout,
+          format,
+          brick.Origin,
+          brick.Dimensions,
+          z0,
+          z1,
+          static_cast<unsigned char*>(texels));
+      }
+      else if (format.HostType == VTK_UNSIGNED_SHORT)
+      {
+        PackBox(scene,
+          source,
+          layout,
+          format,
+          brick.Origin,
+          brick.Dimensions,
+          z0,
+          z1,
+          static_cast<unsigned short*>(texels));
+      }
+      else
+      {
+        PackBox(scene,
+          source,
+          layout,
+          format,
+          brick.Origin,
+          brick.Dimensions,
+          z0,
+          z1,
+          static_cast<float*>(texels));
+      }
+      return texels;
+    };
+    if (!vtkAVSTextureUpload::Upload(this->Window,
+          this->BrickTextures[b],
+          brick.Dimensions,
+          channels,
+          format,
+          fill,
+          this->VolumeTextures(),
+          error))
+    {
+      error = "brick " + std::to_string(b + 1) + " of " + std::to_string(bricks.size()) + " (" +
+        std::to_string(brick.Dimensions[0]) + " x " + std::to_string(brick.Dimensions[1]) + " x " +
+        std::to_string(brick.Dimensions[2]) + " voxels): " + error;
+      return false;
+    }
+    this->NotePeak();
+  }
+  return true;
+}
+
 bool vtkAVSVolumeTextures::UploadClassification(const avs::VolumeScene& scene, std::string& error)
 {
   this->Classification.SetWindow(this->Window);
   std::vector<vtkTextureObject*> held = this->VolumeTextures();
   held.resize(held.size() - this->Classification.VolumeTextures().size()); // counted by it
-  if (!this->Classification.Upload(scene, held, error))
+  if (!this->Classification.Upload(scene, held, this->Bricks, error))
   {
     return false;
   }
@@ -297,6 +469,10 @@ std::vector<vtkTextureObject*> vtkAVSVolumeTextures::VolumeTextures() const
     this->LightVolumes[1],
     this->Scratch[0],
     this->Scratch[1] };
+  for (vtkTextureObject* t : this->BrickTextures)
+  {
+    held.push_back(t);
+  }
   for (vtkTextureObject* t : this->Classification.VolumeTextures())
   {
     held.push_back(t); // last: UploadClassification leaves them to the classification

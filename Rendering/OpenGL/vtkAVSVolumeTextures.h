@@ -17,6 +17,7 @@
 #include "Grid.h"
 #include "ReferenceRenderer.h"
 #include "ScatteringTable.h"
+#include "vtkAVSBricks.h"
 #include "vtkAVSClassification.h"
 #include "vtkAVSTextureUpload.h"
 
@@ -89,10 +90,15 @@ public:
   /// The uploads of vtkAVSRayCaster (documented there).
   /// The scalars in the texel format of their VTK type `scalarType`
   /// (vtkAVSTextureUpload::TexelFormat::ForScalars), converted slab by slab from the scene's
-  /// grids or, where they are empty, from `source`.
+  /// grids or, where they are empty, from `source`; split into `partitions` bricks per axis
+  /// ((1, 1, 1): the fewest the 3D-texture limit allows), one texture each (BrickTextures,
+  /// Scalars then null), when that is more than one, with `lookBack` more voxel layers around
+  /// each shared one (ambient scattering's look-ahead).
   bool UploadScalars(const avs::VolumeScene& scene,
     int scalarType,
     const ScalarSource& source,
+    const std::array<int, 3>& partitions,
+    int lookBack,
     std::string& error);
   bool UploadClassification(const avs::VolumeScene& scene, std::string& error);
   bool UploadAveraged(const avs::Grid& averaged, std::string& error);
@@ -119,6 +125,10 @@ public:
   /// Weak: the window may be deleted before the mapper, and its context took its resources.
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   vtkSmartPointer<vtkTextureObject> Scalars, Occlusion, Table;
+  /// The bricks of a split volume (vtkAVSBricks; one unsplit brick otherwise) and, when split,
+  /// their scalar textures (in the order of Bricks.GetBricks()).
+  vtkAVSBricks Bricks;
+  std::vector<vtkSmartPointer<vtkTextureObject>> BrickTextures;
   vtkAVSClassification Classification;
   /// The layout the scalars were uploaded with (vtkAVSClassification::Layout), and their texel
   /// format (its Scale and Shift map the texels back to data values in the shaders).
@@ -154,6 +164,12 @@ public:
 
 private:
   void NotePeak();
+  void ReleaseBricks(vtkWindow* window);
+  bool UploadBricks(const avs::VolumeScene& scene,
+    const ScalarSource& source,
+    const vtkAVSClassification::Layout& layout,
+    const vtkAVSTextureUpload::TexelFormat& format,
+    std::string& error);
   double PeakBytes = 0.0;
   mutable int SoftwareRenderer = -1; ///< -1 unknown, 0 no, 1 yes (IsSoftwareRenderer)
 };

@@ -66,7 +66,11 @@ float g_thetaCoordinate[8]; // per ray, for directional lights (their theta is c
 float g_column[AVS_NUMBER_OF_LIGHTS * AVS_TABLE_COLUMN];
 #endif
 #ifndef AVS_LOOKAHEAD_EXPLICIT
-float g_ring[AVS_RING]; // T at the last AVS_RING samples; AVS_RING is a power of two > k
+float g_ring[AVS_RING]; // T at the last AVS_RING samples; AVS_RING is a power of two > k + 1
+// Samples before the ray's first whose T the ring holds (a brick's look-back, below), and T
+// before the unsplit ray's start relative to this ray's (1 where they are the same).
+int g_prefix = 0;
+float g_before = 1.0;
 #endif
 
 // The table's theta coordinate, sqrt(theta / pi) (denser near theta = 0).
@@ -170,7 +174,8 @@ bool EffectContinues(float T, int i)
 {
   // Sample i still receives light while the transmittance k + 1 samples back is above the
   // threshold.
-  return i <= g_lag || g_ring[(i - g_lag - 1) & (AVS_RING - 1)] >= u_termination;
+  return i <= g_lag - g_prefix ||
+    g_ring[(i - g_lag - 1 + AVS_RING) & (AVS_RING - 1)] >= u_termination;
 }
 #endif
 //AVS::Effect::Init
@@ -194,6 +199,31 @@ bool EffectContinues(float T, int i)
 #define AVS_FILL_COLUMN(j) if (!LightIsPositional(j)) FillColumn(j, g_thetaCoordinate[j]);
   AVS_FOR_EACH_LIGHT(AVS_FILL_COLUMN)
 #endif
+#if defined(AVS_BRICKED) && !defined(AVS_LOOKAHEAD_EXPLICIT)
+  // A brick's pass (ARCHITECTURE.md, "Bricking"): the unsplit ray's k + 1 samples before this
+  // brick's first (those of the bricks in front, whose voxels the brick's texture holds as its
+  // look-back layers) fill the ring with T relative to the brick's start, T(-j) = 1 / (the
+  // transmittance of the samples -j .. -1), as the unsplit ray holds them relative to its own.
+  // Composited under the bricks in front, whose transmittance is T at this brick's start, the
+  // in-scattered light of the brick's first k samples is the unsplit ray's. Capped at
+  // 1 / u_termination (where the unsplit ray would have ended before).
+  g_prefix = min(g_lag + 1, brickFirst);
+  {
+    float behind = 1.0;
+    for (int j = 1; j <= g_prefix; ++j)
+    {
+      vec3 back = io + (t0 + (offset - float(j)) * dtWorld) * id;
+      vec3 backCoordinate = VolumeCoordinate(back);
+      vec4 s0 = Classify(textureLod(AVS_VOLUME_TEXTURE, backCoordinate, 0.0), backCoordinate);
+      AVS_CROP(s0, back);
+      behind = min(behind / exp(-s0.a * dt), 1.0 / max(u_termination, 1e-6));
+      g_ring[(AVS_RING - j) & (AVS_RING - 1)] = behind;
+    }
+    // Where the look-back reached the unsplit ray's start (brickFirst < k + 1), T before it is
+    // 1, relative to this brick's start the last value.
+    g_before = behind;
+  }
+#endif
 //AVS::Effect::Sample
 #ifdef AVS_DIFFUSE
     // The extended model's diffuse light at the sample itself: albedo c phi / (4 pi) per unit
@@ -212,9 +242,11 @@ bool EffectContinues(float T, int i)
 #endif
 #ifndef AVS_LOOKAHEAD_EXPLICIT
     g_ring[i & (AVS_RING - 1)] = T;
-    // T at the samples k and k + 1 back; 1 before the ray's start.
-    float newer = i >= g_lag ? g_ring[(i - g_lag) & (AVS_RING - 1)] : 1.0;
-    float older = i > g_lag ? g_ring[(i - g_lag - 1) & (AVS_RING - 1)] : 1.0;
+    // T at the samples k and k + 1 back; 1 before the ray's start (g_before: a brick's).
+    float newer =
+      i >= g_lag - g_prefix ? g_ring[(i - g_lag + AVS_RING) & (AVS_RING - 1)] : g_before;
+    float older =
+      i > g_lag - g_prefix ? g_ring[(i - g_lag - 1 + AVS_RING) & (AVS_RING - 1)] : g_before;
     if (here.a > 0.0 && older >= u_termination)
     {
       float lagged = mix(newer, older, g_lagFraction);
@@ -230,7 +262,7 @@ bool EffectContinues(float T, int i)
       {
         float tj = t + float(j) * dtWorld;
         vec3 first = io + tj * id;
-        vec3 firstCoordinate = (first + 0.5) / u_dimensions;
+        vec3 firstCoordinate = VolumeCoordinate(first);
         vec4 firstVoxel = textureLod(AVS_VOLUME_TEXTURE, firstCoordinate, 0.0);
         vec4 s1 = Classify(firstVoxel, firstCoordinate);
         AVS_CROP(s1, first);
@@ -246,7 +278,7 @@ bool EffectContinues(float T, int i)
       float lagged = T * mix(extinction, 1.0, g_lagFraction);
       float ta = t + float(g_lag + 1) * dtWorld;
       vec3 ahead = io + ta * id;
-      vec3 aheadCoordinate = (ahead + 0.5) / u_dimensions;
+      vec3 aheadCoordinate = VolumeCoordinate(ahead);
       vec4 aheadVoxel = textureLod(AVS_VOLUME_TEXTURE, aheadCoordinate, 0.0);
       vec4 s2 = Classify(aheadVoxel, aheadCoordinate);
       AVS_CROP(s2, ahead);

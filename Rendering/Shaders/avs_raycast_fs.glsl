@@ -50,6 +50,27 @@ float HenyeyGreenstein(float mu, float g)
 // ClipRay, ClipInside, AVS_CROP: clipping planes and cropping (avs_clip.glsl).
 //AVS::Clip::Dec
 
+#ifdef AVS_BRICKED
+// A split volume (Rendering/OpenGL/vtkAVSBricks.h) is drawn one brick per pass, back to front:
+// the brick's owned box [u_brickLow, u_brickHigh) (continuous index) and its texture's first
+// voxel and size. Each pass takes the unsplit ray's samples that lie in the owned box. (Here,
+// after //AVS::Classify::Dec, where the defines go.)
+uniform vec3 u_brickLow;
+uniform vec3 u_brickHigh;
+uniform vec3 u_brickOrigin;
+uniform vec3 u_brickDimensions;
+// The volume texture coordinate of a continuous index (texel centres on the voxels).
+vec3 VolumeCoordinate(vec3 index)
+{
+  return (index - u_brickOrigin + 0.5) / u_brickDimensions;
+}
+#else
+vec3 VolumeCoordinate(vec3 index)
+{
+  return (index + 0.5) / u_dimensions;
+}
+#endif
+
 //AVS::Effect::Dec
 
 float Hash(vec2 p)
@@ -99,10 +120,33 @@ void main()
   float dtWorld = (t1 - t0) / float(steps);
   float dt = dtWorld * dataPerWorld;
   float offset = u_jitter == 1 ? Hash(gl_FragCoord.xy) : 0.5;
+#ifdef AVS_BRICKED
+  // The samples t0 + (i + offset) dtWorld of the unsplit ray in the brick's owned box: i in
+  // [brickFirst, brickLast). Neighbouring bricks compute their shared face's crossing from the
+  // same plane, so every sample falls in exactly one brick. The ray then starts at brickFirst.
+  // (Clamped as floats: a ray parallel to a face has infinite crossings.)
+  vec3 blo = (u_brickLow - io) / id;
+  vec3 bhi = (u_brickHigh - io) / id;
+  vec3 bmin = min(blo, bhi);
+  vec3 bmax = max(blo, bhi);
+  float b0 = max(max(bmin.x, bmin.y), bmin.z);
+  float b1 = min(min(bmax.x, bmax.y), bmax.z);
+  int brickFirst = int(clamp(ceil((b0 - t0) / dtWorld - offset), 0.0, float(steps)));
+  int brickLast = int(clamp(ceil((b1 - t0) / dtWorld - offset), 0.0, float(steps)));
+  if (brickLast <= brickFirst)
+  {
+    discard;
+  }
+  t0 += float(brickFirst) * dtWorld;
+  steps = brickLast - brickFirst;
+  vec3 inverseDimensions = 1.0 / u_brickDimensions;
+  vec3 firstCoordinate = VolumeCoordinate(io + (t0 + offset * dtWorld) * id);
+#else
   // Per-ray constants: the volume texture coordinate of sample i is first + i * step (texel
   // centres on the voxels), and the transfer-function coordinates are affine in the scalar.
   vec3 inverseDimensions = 1.0 / u_dimensions;
   vec3 firstCoordinate = (io + (t0 + offset * dtWorld) * id + 0.5) * inverseDimensions;
+#endif
   vec3 stepCoordinate = dtWorld * id * inverseDimensions;
 
   //AVS::Effect::Init
