@@ -67,10 +67,16 @@ float g_column[AVS_NUMBER_OF_LIGHTS * AVS_TABLE_COLUMN];
 #endif
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 float g_ring[AVS_RING]; // T at the last AVS_RING samples; AVS_RING is a power of two > k + 1
+#ifdef AVS_BRICKED
 // Samples before the ray's first whose T the ring holds (a brick's look-back, below), and T
 // before the unsplit ray's start relative to this ray's (1 where they are the same).
 int g_prefix = 0;
 float g_before = 1.0;
+#else
+// An unsplit ray: constants, so that the look-ahead costs what it did before bricking.
+#define g_prefix 0
+#define g_before 1.0
+#endif
 #endif
 
 // The table's theta coordinate, sqrt(theta / pi) (denser near theta = 0).
