@@ -79,7 +79,7 @@ def main(plugin, out):
     for name, value in (("LightingModel", "Ambient Scattering"), ("Albedo", 0.9),
                         ("ScatteringAnisotropy", 0.0), ("AmbientRadius", 0.0),
                         ("LightScale", 1.0), ("EmissionWeight", 0.0),
-                        ("LightVolumeMaximumDimension", 128)):
+                        ("LightVolumeMaximumDimension", 128), ("MaximumGPUMemory", 0)):
         checks.check(display.GetPropertyValue(name) == value,
                      "%s defaults to %r (got %r)" % (name, value, display.GetPropertyValue(name)))
 
@@ -99,6 +99,13 @@ def main(plugin, out):
                  % (mapper.GetClassName() if mapper else None))
     checks.check(t.lit_fraction(base) > 0.15,
                  "the volume covers the picture (%.2f lit)" % t.lit_fraction(base))
+    # The GPU memory budget reaches the mapper (its PrintSelf: pvbatch wraps it as the
+    # vtkVolumeMapper it derives from).
+    display.MaximumGPUMemory = 512
+    pv.Render(view)
+    checks.check(mapper is not None and "MaximumGPUMemory: 512" in str(mapper),
+                 "MaximumGPUMemory reaches the mapper")
+    display.MaximumGPUMemory = 0
 
     # --- The VTK side: the same scene with ParaView's VTK and the plugin's mapper class.
     source = vtkRTAnalyticSource()

@@ -143,6 +143,19 @@ int vtkAmbientScatteringRepresentation::GetUseJittering()
   return this->AmbientScatteringMapper->GetUseJittering();
 }
 
+void vtkAmbientScatteringRepresentation::SetMaximumGPUMemory(int mebibytes)
+{
+  for (vtkAVSVolumeMapper* m : this->Mappers())
+  {
+    m->SetMaximumGPUMemory(mebibytes);
+  }
+}
+
+int vtkAmbientScatteringRepresentation::GetMaximumGPUMemory()
+{
+  return this->AmbientScatteringMapper->GetMaximumGPUMemory();
+}
+
 std::array<vtkAVSVolumeMapper*, 3> vtkAmbientScatteringRepresentation::Mappers()
 {
   return { this->EmissionAbsorptionMapper.GetPointer(),
@@ -203,6 +216,7 @@ void vtkAmbientScatteringRepresentation::PrintSelf(ostream& os, vtkIndent indent
   os << indent << "LightVolumeMaximumDimension: " << this->GetLightVolumeMaximumDimension() << "\n";
   os << indent << "SampleDistance: " << this->GetSampleDistance() << "\n";
   os << indent << "UseJittering: " << this->GetUseJittering() << "\n";
+  os << indent << "MaximumGPUMemory: " << this->GetMaximumGPUMemory() << " MiB\n";
   os << indent << "LightAcrossRanks: " << (this->LightAcrossRanks ? "On" : "Off") << "\n";
   os << indent << "EmissionAbsorptionMapper: " << this->EmissionAbsorptionMapper.GetPointer()
      << "\n";

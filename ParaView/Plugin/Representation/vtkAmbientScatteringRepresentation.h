@@ -129,6 +129,15 @@ public:
 
   ///@{
   /**
+   * The budget of the volume's GPU textures in MiB, for the three mappers
+   * (vtkAVSVolumeMapper::SetMaximumGPUMemory). Default 0: what the context reports.
+   */
+  void SetMaximumGPUMemory(int mebibytes);
+  int GetMaximumGPUMemory();
+  ///@}
+
+  ///@{
+  /**
    * Under MPI (more than one process in vtkMultiProcessController::GetGlobalController()): on
    * (the default), the mappers light each rank's piece as a part of the whole image (their
    * WholeExtent and Controller; vtkAVSVolumeMapper), so light and shadows cross the pieces'
