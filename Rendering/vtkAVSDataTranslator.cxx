@@ -349,7 +349,7 @@ bool vtkAVSDataTranslator::ToVolume(vtkImageData* image,
         nanTuples,
         volume.Infinities));
       default:
-        break;
+        break; // bits: integers, no NaN
     }
   }
   else
@@ -429,7 +429,8 @@ void vtkAVSDataTranslator::CopyValues(vtkDataArray* array,
 {
   const int components = array->GetNumberOfComponents();
   const float lo = static_cast<float>(range[0]), hi = static_cast<float>(range[1]);
-  if (array->HasStandardMemoryLayout())
+  // (vtkTemplateMacro has no case for bit arrays, which GetComponent reads.)
+  if (array->HasStandardMemoryLayout() && array->GetDataType() != VTK_BIT)
   {
     switch (array->GetDataType())
     {

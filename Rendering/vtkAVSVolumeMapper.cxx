@@ -434,6 +434,7 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       << vtkAVSShaderOptions::BlendModeName(this->BlendMode) << " blend mode is not rendered on a "
       << "volume split into bricks (" << in.RayCaster.GetNumberOfBricks()
       << "; see SetPartitions): use the composite blend mode, or a volume within one 3D texture");
+    this->ReleaseGraphicsResources(window); // nothing of it stays on the GPU
     return;
   }
   blend.ScalarRange[0] = in.Scene.Transfer.Minimum;

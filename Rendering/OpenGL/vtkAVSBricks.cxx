@@ -1,6 +1,7 @@
 #include "vtkAVSBricks.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdlib>
 #include <numeric>
 

@@ -125,19 +125,20 @@ std::array<double, 3> vtkAVSFrameUniforms::EyeInIndexFrame(vtkRenderer* renderer
   camera->GetPosition(world);
   if (camera->GetParallelProjection())
   {
-    // Far behind the volume's centre: the bricks' order only needs the side of each cut plane.
+    // The eye at infinity behind the volume: the bricks' order only needs the side of each cut
+    // plane it lies on, which is the side the rays come from along each axis (below the grid
+    // where they run towards +a, above it where they run towards -a; an axis they run across
+    // has no face a ray crosses, and any side will do).
     double direction[4] = { 0, 0, 0, 0 };
     camera->GetDirectionOfProjection(direction);
     double index[4];
     frame.WorldToIndex->MultiplyPoint(direction, index);
-    const double length =
-      std::sqrt(index[0] * index[0] + index[1] * index[1] + index[2] * index[2]);
-    const double far = 1e3 * (frame.Dimensions[0] + frame.Dimensions[1] + frame.Dimensions[2]) /
-      std::max(length, 1e-300);
     std::array<double, 3> eye;
     for (int a = 0; a < 3; ++a)
     {
-      eye[a] = 0.5 * (frame.Dimensions[a] - 1) - far * index[a];
+      eye[a] = index[a] > 0.0 ? -1.0
+        : index[a] < 0.0      ? static_cast<double>(frame.Dimensions[a])
+                              : 0.5 * (frame.Dimensions[a] - 1);
     }
     return eye;
   }

@@ -34,7 +34,7 @@ public:
   /// gradient's voxel step in its texture.
   static void SetBrick(vtkShaderProgram* program, const vtkAVSBricks::Brick& brick);
   /// Where the bricks are seen from, in the data's continuous index frame: the camera, or for
-  /// a parallel projection a point far behind the volume along the direction of projection.
+  /// a parallel projection a point outside the grid on the side each axis's rays come from.
   static std::array<double, 3> EyeInIndexFrame(vtkRenderer* renderer,
     const vtkAVSRayCaster::Frame& frame);
 };

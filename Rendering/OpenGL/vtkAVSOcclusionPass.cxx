@@ -9,6 +9,7 @@
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
@@ -76,7 +77,8 @@ bool vtkAVSOcclusionPass::Run(vtkAVSVolumeTextures& textures,
   // last dispatch referenced until the next one, so without it the caller's release of sigma_t
   // (4 bytes per voxel) would not free its storage until the next compute pass (measured on
   // llvmpipe: 530 MiB held at 512^3 after the pass, and twice that at the next rebuild).
-  glActiveTexture(GL_TEXTURE0 + sigma->GetTextureUnit());
+  vtkOpenGLState* state = textures.Window->GetState();
+  state->vtkglActiveTexture(GL_TEXTURE0 + sigma->GetTextureUnit());
   glBindTexture(GL_TEXTURE_3D, 0);
   glUniform3i(location("u_targetDimensions"), 0, 0, 0);
   glDispatchCompute(1, 1, 1);

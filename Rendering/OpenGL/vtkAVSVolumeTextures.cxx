@@ -185,8 +185,8 @@ void PackSlab(const avs::VolumeScene& scene,
       const std::vector<float>& grid = c == layout.Components ? scene.Medium.Validity.Values
         : c == 0                                              ? scene.Scalars.Values
                  : scene.Medium.Components[c - 1].Values.Values;
-      const float* v = grid.data() + begin;
-      if (grid.empty())
+      const float* v = grid.empty() ? nullptr : grid.data() + begin;
+      if (!v)
       {
         read.resize(slice);
         source.Read(c, begin, begin + slice, read.data());
@@ -244,8 +244,8 @@ void PackBox(const avs::VolumeScene& scene,
             static_cast<std::size_t>(d[0]) +
           origin[0];
         // The grid's row, or the row read from the source where the grid holds no values.
-        const float* v = grid.data() + row;
-        if (grid.empty())
+        const float* v = grid.empty() ? nullptr : grid.data() + row;
+        if (!v)
         {
           read.resize(static_cast<std::size_t>(dimensions[0]));
           source.Read(c, row, row + dimensions[0], read.data());
@@ -278,16 +278,24 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
   const vtkAVSTextureUpload::TexelFormat format =
     vtkAVSTextureUpload::TexelFormat::ForScalars(scalarType, channels, layout.Validity != 0);
   const std::array<int, 3>& dimensions = scene.Scalars.Geometry.Dimensions;
-  // Bricks (vtkAVSBricks): the partitions asked for, or (1, 1, 1) the fewest that the
-  // context's 3D-texture limit allows; one more voxel layer around the shared one when a
-  // gradient opacity reads the neighbours, and those ambient scattering's look-back reads before
-  // a brick's first sample (avs_as_effect.glsl).
+  // Bricks (vtkAVSBricks): per axis the partitions asked for, or more where the context's
+  // 3D-texture limit needs more ((1, 1, 1): only those); one more voxel layer around the shared
+  // one when a gradient opacity reads the neighbours, and those ambient scattering's look-back
+  // reads before a brick's first sample (avs_as_effect.glsl).
+  if (scene.Scalars.Values.empty() && !source.Read)
+  {
+    error = "the scalars are neither on the host nor readable";
+    return false;
+  }
   const int ghost = (layout.Gradient != 0 ? 1 : 0) + std::max(0, lookBack);
-  std::array<int, 3> split = partitions;
-  if (split == std::array<int, 3>{ 1, 1, 1 } &&
-    !vtkAVSBricks::PartitionsFor(dimensions, this->MaximumTextureSize3D(), ghost, split, error))
+  std::array<int, 3> split;
+  if (!vtkAVSBricks::PartitionsFor(dimensions, this->MaximumTextureSize3D(), ghost, split, error))
   {
     return false;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    split[a] = std::max(split[a], partitions[a]);
   }
   this->ReleaseBricks(this->Window);
   this->Bricks.Split(dimensions, split, scene.Scalars.Geometry.Border, ghost);
@@ -333,11 +341,6 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
     }
     return texels;
   };
-  if (!onHost && !source.Read)
-  {
-    error = "the scalars are neither on the host nor readable";
-    return false;
-  }
   if (!vtkAVSTextureUpload::Upload(this->Window,
         this->Scalars,
         scene.Scalars.Geometry.Dimensions,

@@ -19,6 +19,7 @@
 #include "vtkRectilinearGrid.h"
 #include "vtkSphereSource.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -501,7 +502,15 @@ int main(int argc, char* argv[])
                   << "\n";
       }
       AVS_CHECK(errors->Errors == 0);
-      AVS_CHECK(mapper->GetNumberOfBricks() > 1);
+      const int automatic = mapper->GetNumberOfBricks();
+      AVS_CHECK(automatic > 1);
+      // Partitions asked for along the long axis, fewer than it needs: as many as it needs.
+      mapper->SetPartitions(2, 1, 1);
+      errors->Clear();
+      scene.Render();
+      AVS_CHECK(errors->Errors == 0);
+      AVS_CHECK(mapper->GetNumberOfBricks() == std::max(2, automatic));
+      mapper->SetPartitions(1, 1, 1);
       // Good input again renders.
       mapper->SetInputData(data);
       errors->Clear();
