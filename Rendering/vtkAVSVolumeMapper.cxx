@@ -237,7 +237,9 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     ? vtkAVSRayCaster::LookBackVoxels(
         rp.AmbientRadius, rp.SampleDistance, in.Scene.Scalars.Geometry.Spacing)
     : 0;
-  if (partitions != in.UploadedPartitions || lookBack != in.UploadedLookBack)
+  // (Bricks with more layers than the look-back needs serve: a smaller radius or sample distance
+  // uploads nothing again; a larger one uploads the bricks with the layers it needs.)
+  if (partitions != in.UploadedPartitions || lookBack > in.UploadedLookBack)
   {
     in.ScalarsUploaded = false;
   }

@@ -21,6 +21,7 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkVolume.h"
 
 #include <functional>
 #include <iostream>
@@ -317,6 +318,40 @@ int main(int argc, char* argv[])
     mapper->SetPartitions(1, 1, 1);
     RenderVolume(window, renderer, mapper, plain);
     AVS_CHECK(mapper->GetNumberOfBricks() == 1);
+  }
+  // Ambient scattering's bricks keep the look-back layers of the largest radius they were
+  // uploaded for: a smaller radius draws from them (no upload), a larger one uploads again.
+  // (One volume that stays in the renderer: removing a prop releases its mapper's resources.)
+  {
+    vtkNew<vtkAmbientScatteringVolumeMapper> unsplit, split;
+    for (vtkAmbientScatteringVolumeMapper* m : { unsplit.Get(), split.Get() })
+    {
+      m->SetInputData(points);
+      m->UseJitteringOff();
+      m->SetAmbientRadius(0.2);
+    }
+    split->SetPartitions(2, 1, 2);
+    vtkNew<vtkVolume> volume;
+    volume->SetMapper(split);
+    volume->SetProperty(plain);
+    renderer->AddVolume(volume);
+    window->Render();
+    const int uploads = split->GetNumberOfDataUploads();
+    split->SetAmbientRadius(0.1);
+    window->Render();
+    auto picture = Grab(window);
+    const int after = split->GetNumberOfDataUploads();
+    split->SetAmbientRadius(0.3);
+    window->Render();
+    const int larger = split->GetNumberOfDataUploads();
+    renderer->RemoveVolume(volume);
+    unsplit->SetAmbientRadius(0.1);
+    auto expected = RenderVolume(window, renderer, unsplit, plain);
+    std::cout << "radius 0.2 -> 0.1 -> 0.3, split: uploads " << uploads << " -> " << after << " -> "
+              << larger << ", at 0.1 " << Psnr(expected, picture) << " dB against unsplit\n";
+    AVS_CHECK(after == uploads);
+    AVS_CHECK(larger == uploads + 1);
+    AVS_CHECK(Psnr(expected, picture) >= 55.0);
   }
   return failures == 0 ? 0 : 1;
 }
