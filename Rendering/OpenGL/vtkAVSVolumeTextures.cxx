@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 void vtkAVSVolumeTextures::SetWindow(vtkOpenGLRenderWindow* window)
 {
@@ -85,7 +86,11 @@ int vtkAVSVolumeTextures::MaximumTextureSize3D() const
   }
   GLint size = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &size);
-  return size;
+  // A smaller limit from the environment, so that a test on a small volume can take the
+  // automatic split that a volume beyond the GPU's limit takes.
+  const char* cap = std::getenv("AVS_MAXIMUM_3D_TEXTURE_SIZE");
+  const int capped = cap ? std::atoi(cap) : 0;
+  return capped > 0 ? std::min(static_cast<int>(size), capped) : static_cast<int>(size);
 }
 
 void vtkAVSVolumeTextures::ConfigureSampling(vtkTextureObject* t)

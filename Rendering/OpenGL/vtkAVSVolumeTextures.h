@@ -51,7 +51,8 @@ public:
   /// Releases every texture (in the current context, which the caller made `window`'s).
   void ReleaseGraphicsResources(vtkWindow* window);
 
-  /// Largest 3D texture size of the context (0 without a context).
+  /// Largest 3D texture size of the context (0 without a context), or AVS_MAXIMUM_3D_TEXTURE_SIZE
+  /// from the environment where that is smaller (tests: the automatic split on a small volume).
   int MaximumTextureSize3D() const;
   /// Whether the context's renderer runs on the CPU (llvmpipe and the like), asked once per
   /// context.

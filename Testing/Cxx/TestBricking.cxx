@@ -23,6 +23,7 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
 
+#include <cstdlib>
 #include <functional>
 #include <iostream>
 #include <sstream>
@@ -318,6 +319,42 @@ int main(int argc, char* argv[])
     mapper->SetPartitions(1, 1, 1);
     RenderVolume(window, renderer, mapper, plain);
     AVS_CHECK(mapper->GetNumberOfBricks() == 1);
+  }
+  // The automatic split, which a volume beyond the GPU's largest 3D texture takes, with that
+  // limit lowered to 24 voxels (AVS_MAXIMUM_3D_TEXTURE_SIZE) for the 40^3 volume: split into
+  // bricks by itself, the unsplit picture.
+  for (int effect = 0; effect < 2; ++effect)
+  {
+    vtkSmartPointer<vtkAVSVolumeMapper> whole, automatic;
+    if (effect == 0)
+    {
+      whole = vtkSmartPointer<EA>::New();
+      automatic = vtkSmartPointer<EA>::New();
+    }
+    else
+    {
+      whole = vtkSmartPointer<vtkAmbientScatteringVolumeMapper>::New();
+      automatic = vtkSmartPointer<vtkAmbientScatteringVolumeMapper>::New();
+    }
+    for (vtkAVSVolumeMapper* m : { whole.Get(), automatic.Get() })
+    {
+      m->SetInputData(points);
+      m->UseJitteringOff();
+    }
+    vtkNew<TestErrorObserver> errors;
+    automatic->AddObserver(vtkCommand::ErrorEvent, errors);
+    auto expected = RenderVolume(window, renderer, whole, plain);
+    setenv("AVS_MAXIMUM_3D_TEXTURE_SIZE", "24", 1);
+    auto picture = RenderVolume(window, renderer, automatic, plain);
+    unsetenv("AVS_MAXIMUM_3D_TEXTURE_SIZE");
+    std::cout << "automatic split under a 24-voxel limit, " << automatic->GetClassName() << ": "
+              << automatic->GetNumberOfBricks() << " bricks, " << Psnr(expected, picture)
+              << " dB\n";
+    AVS_CHECK(errors->Errors == 0);
+    AVS_CHECK(whole->GetNumberOfBricks() == 1);
+    AVS_CHECK(automatic->GetNumberOfBricks() >= 8);
+    AVS_CHECK(Brightness(expected) > 1000.0);
+    AVS_CHECK(Psnr(expected, picture) >= 55.0);
   }
   // Ambient scattering's bricks keep the look-back layers of the largest radius they were
   // uploaded for: a smaller radius draws from them (no upload), a larger one uploads again.
