@@ -233,13 +233,15 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   const int largest = in.RayCaster.MaximumTextureSize3D();
   const bool split = partitions != std::array<int, 3>{ 1, 1, 1 } ||
     std::any_of(dimensions.begin(), dimensions.end(), [largest](int d) { return d > largest; });
-  const int lookBack = this->GetEffect() == 2 && split
+  const std::array<int, 3> lookBack = this->GetEffect() == 2 && split
     ? vtkAVSRayCaster::LookBackVoxels(
         rp.AmbientRadius, rp.SampleDistance, in.Scene.Scalars.Geometry.Spacing)
-    : 0;
+    : std::array<int, 3>{ 0, 0, 0 };
+  const bool moreLayers = lookBack[0] > in.UploadedLookBack[0] ||
+    lookBack[1] > in.UploadedLookBack[1] || lookBack[2] > in.UploadedLookBack[2];
   // (Bricks with more layers than the look-back needs serve: a smaller radius or sample distance
   // uploads nothing again; a larger one uploads the bricks with the layers it needs.)
-  if (partitions != in.UploadedPartitions || lookBack > in.UploadedLookBack)
+  if (partitions != in.UploadedPartitions || moreLayers)
   {
     in.ScalarsUploaded = false;
   }

@@ -61,7 +61,8 @@ struct vtkAVSVolumeMapper::Internals
   int ScalarType = 0;
   bool ScalarsUploaded = false;
   std::array<int, 3> UploadedPartitions{ 1, 1, 1 }; ///< the Partitions of the last upload
-  int UploadedLookBack = 0; ///< and its look-back voxels (vtkAVSRayCaster::LookBackVoxels)
+  /// and its look-back voxels per axis (vtkAVSRayCaster::LookBackVoxels)
+  std::array<int, 3> UploadedLookBack{ 0, 0, 0 };
 
   vtkVolumeProperty* PropertyObject = nullptr;
   vtkMTimeType PropertyTime = 0;

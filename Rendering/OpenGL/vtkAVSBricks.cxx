@@ -18,7 +18,7 @@ void vtkAVSBricks::Clear()
 void vtkAVSBricks::Split(const std::array<int, 3>& d,
   const std::array<int, 3>& partitions,
   double border,
-  int ghost)
+  const std::array<int, 3>& ghost)
 {
   this->Clear();
   for (int a = 0; a < 3; ++a)
@@ -46,8 +46,8 @@ void vtkAVSBricks::Split(const std::array<int, 3>& d,
           const int lo = this->Cuts[a][c], hi = this->Cuts[a][c + 1];
           b.Low[a] = c == 0 ? -border : lo;
           b.High[a] = c == p[a] - 1 ? d[a] - 1 + border : hi;
-          b.Origin[a] = std::max(0, lo - ghost);
-          b.Dimensions[a] = std::min(d[a] - 1, hi + ghost) - b.Origin[a] + 1;
+          b.Origin[a] = std::max(0, lo - ghost[a]);
+          b.Dimensions[a] = std::min(d[a] - 1, hi + ghost[a]) - b.Origin[a] + 1;
         }
         this->Bricks.push_back(b);
       }
@@ -57,7 +57,7 @@ void vtkAVSBricks::Split(const std::array<int, 3>& d,
 
 bool vtkAVSBricks::PartitionsFor(const std::array<int, 3>& d,
   int maximumSize,
-  int ghost,
+  const std::array<int, 3>& ghost,
   std::array<int, 3>& partitions,
   std::string& error)
 {
@@ -69,7 +69,7 @@ bool vtkAVSBricks::PartitionsFor(const std::array<int, 3>& d,
       continue;
     }
     // A brick of n intervals holds n + 1 voxels and at most 2 ghost layers.
-    const int intervals = maximumSize - 1 - 2 * ghost;
+    const int intervals = maximumSize - 1 - 2 * ghost[a];
     if (intervals < 1)
     {
       error = "the largest 3D texture (" + std::to_string(maximumSize) +

@@ -37,18 +37,19 @@ public:
   };
 
   /// Splits a volume of `dimensions` voxels into `partitions` bricks per axis (each clamped to
-  /// [1, dimensions - 1], 1 on a one-voxel axis), with `ghost` extra voxel layers on either side
-  /// of each shared one, the outer boxes reaching `border` voxels beyond the samples.
+  /// [1, dimensions - 1], 1 on a one-voxel axis), with `ghost[a]` extra voxel layers on either
+  /// side of each shared one along axis a, the outer boxes reaching `border` voxels beyond the
+  /// samples.
   void Split(const std::array<int, 3>& dimensions,
     const std::array<int, 3>& partitions,
     double border,
-    int ghost);
+    const std::array<int, 3>& ghost);
 
   /// The fewest partitions per axis for which every brick's texture (ghost layers included) has
   /// at most `maximumSize` voxels per axis; false (with the reason) where none has.
   static bool PartitionsFor(const std::array<int, 3>& dimensions,
     int maximumSize,
-    int ghost,
+    const std::array<int, 3>& ghost,
     std::array<int, 3>& partitions,
     std::string& error);
 

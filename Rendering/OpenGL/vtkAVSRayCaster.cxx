@@ -83,16 +83,24 @@ bool vtkAVSRayCaster::UploadScalars(const avs::VolumeScene& scene,
   int scalarType,
   const vtkAVSVolumeTextures::ScalarSource& source,
   const std::array<int, 3>& partitions,
-  int lookBack,
+  const std::array<int, 3>& lookBack,
   std::string& error)
 {
   return this->Textures.UploadScalars(scene, scalarType, source, partitions, lookBack, error);
 }
 
-int vtkAVSRayCaster::LookBackVoxels(double radius, double sampleDistance, const avs::Vec3& spacing)
+std::array<int, 3> vtkAVSRayCaster::LookBackVoxels(double radius,
+  double sampleDistance,
+  const avs::Vec3& spacing)
 {
-  const double smallest = std::min({ spacing.x, spacing.y, spacing.z });
-  return smallest > 0.0 ? static_cast<int>(std::ceil((radius + sampleDistance) / smallest)) : 0;
+  // The look-back reaches r + one step along the ray, so at most that along each grid axis.
+  const double h[3] = { spacing.x, spacing.y, spacing.z };
+  std::array<int, 3> voxels{ 0, 0, 0 };
+  for (int a = 0; a < 3; ++a)
+  {
+    voxels[a] = h[a] > 0.0 ? static_cast<int>(std::ceil((radius + sampleDistance) / h[a])) : 0;
+  }
+  return voxels;
 }
 
 int vtkAVSRayCaster::GetNumberOfBricks() const

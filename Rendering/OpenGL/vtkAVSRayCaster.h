@@ -81,12 +81,14 @@ public:
     int scalarType,
     const vtkAVSVolumeTextures::ScalarSource& source,
     const std::array<int, 3>& partitions,
-    int lookBack,
+    const std::array<int, 3>& lookBack,
     std::string& error);
   /// The voxels a brick's rays of ambient scattering read before its first sample: the
   /// look-ahead's r and one step back (the ring buffer starts there; avs_as_effect.glsl), at
   /// `spacing`.
-  static int LookBackVoxels(double radius, double sampleDistance, const avs::Vec3& spacing);
+  static std::array<int, 3> LookBackVoxels(double radius,
+    double sampleDistance,
+    const avs::Vec3& spacing);
   /// Bricks of the uploaded scalars (1: unsplit, 0: none uploaded) and whether there are more.
   int GetNumberOfBricks() const;
   bool IsBricked() const { return this->GetNumberOfBricks() > 1; }

@@ -273,7 +273,7 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
   int scalarType,
   const ScalarSource& source,
   const std::array<int, 3>& partitions,
-  int lookBack,
+  const std::array<int, 3>& lookBack,
   std::string& error)
 {
   const vtkAVSClassification::Layout layout = vtkAVSClassification::LayoutOf(scene);
@@ -292,7 +292,11 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
     error = "the scalars are neither on the host nor readable";
     return false;
   }
-  const int ghost = (layout.Gradient != 0 ? 1 : 0) + std::max(0, lookBack);
+  std::array<int, 3> ghost;
+  for (int a = 0; a < 3; ++a)
+  {
+    ghost[a] = (layout.Gradient != 0 ? 1 : 0) + std::max(0, lookBack[a]);
+  }
   std::array<int, 3> split;
   if (!vtkAVSBricks::PartitionsFor(dimensions, this->MaximumTextureSize3D(), ghost, split, error))
   {

@@ -99,7 +99,7 @@ public:
     int scalarType,
     const ScalarSource& source,
     const std::array<int, 3>& partitions,
-    int lookBack,
+    const std::array<int, 3>& lookBack,
     std::string& error);
   bool UploadClassification(const avs::VolumeScene& scene, std::string& error);
   bool UploadAveraged(const avs::Grid& averaged, std::string& error);

@@ -356,6 +356,28 @@ int main(int argc, char* argv[])
     AVS_CHECK(Brightness(expected) > 1000.0);
     AVS_CHECK(Psnr(expected, picture) >= 55.0);
   }
+  // Anisotropic spacing (z three times x and y): the look-back layers are counted per axis
+  // (fewer along z), and the split picture is still the unsplit one.
+  {
+    vtkNew<vtkImageData> stretched;
+    stretched->ShallowCopy(points);
+    double h[3];
+    points->GetSpacing(h);
+    stretched->SetSpacing(h[0], h[1], 3.0 * h[2]);
+    vtkNew<vtkAmbientScatteringVolumeMapper> whole, split;
+    for (vtkAmbientScatteringVolumeMapper* m : { whole.Get(), split.Get() })
+    {
+      m->SetInputData(stretched);
+      m->UseJitteringOff();
+    }
+    split->SetPartitions(2, 2, 3);
+    auto expected = RenderVolume(window, renderer, whole, plain);
+    auto picture = RenderVolume(window, renderer, split, plain);
+    std::cout << "anisotropic spacing, (2, 2, 3): " << Psnr(expected, picture) << " dB\n";
+    AVS_CHECK(split->GetNumberOfBricks() == 12);
+    AVS_CHECK(Brightness(expected) > 1000.0);
+    AVS_CHECK(Psnr(expected, picture) >= 55.0);
+  }
   // Ambient scattering's bricks keep the look-back layers of the largest radius they were
   // uploaded for: a smaller radius draws from them (no upload), a larger one uploads again.
   // (One volume that stays in the renderer: removing a prop releases its mapper's resources.)
