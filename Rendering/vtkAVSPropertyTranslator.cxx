@@ -82,6 +82,14 @@ Table GradientTable(vtkVolumeProperty* property, int index, const std::array<dou
   {
     v = std::clamp(v, 0.0f, 1.0f);
   }
+  // A function of 1 everywhere multiplies by 1: no gradient opacity, and no gradients to compute
+  // (six more fetches per sample). VTK creates one wherever its gradient-opacity getter finds
+  // none (GetStoredGradientOpacity, vtkVolumeProperty::DeepCopy), so a property that was only
+  // read or copied has one.
+  if (std::all_of(go.Opacity.begin(), go.Opacity.end(), [](float v) { return v == 1.0f; }))
+  {
+    return Table();
+  }
   return go;
 }
 

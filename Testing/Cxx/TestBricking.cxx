@@ -16,12 +16,14 @@
 #include "vtkAmbientOcclusionVolumeMapper.h"
 #include "vtkAmbientScatteringVolumeMapper.h"
 #include "vtkEmissionAbsorptionVolumeMapper.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 
 #include <cstdlib>
 #include <functional>
@@ -355,6 +357,45 @@ int main(int argc, char* argv[])
     AVS_CHECK(automatic->GetNumberOfBricks() >= 8);
     AVS_CHECK(Brightness(expected) > 1000.0);
     AVS_CHECK(Psnr(expected, picture) >= 55.0);
+  }
+  // A gradient opacity of 1 everywhere, as vtkVolumeProperty::GetStoredGradientOpacity (and so
+  // DeepCopy) creates where a property has none, is no gradient opacity: the picture and the
+  // bricks (no gradient layer) of a disabled gradient opacity (one volume that stays in the
+  // renderer while measured).
+  {
+    vtkNew<vtkVolumeProperty> none, constant;
+    none->DeepCopy(plain);
+    none->DisableGradientOpacityOn();
+    constant->DeepCopy(plain);
+    vtkNew<vtkPiecewiseFunction> one; // what VTK's default gradient opacity is
+    one->AddPoint(0.0, 1.0);
+    one->AddPoint(255.0, 1.0);
+    constant->SetGradientOpacity(one);
+    std::array<double, 2> bytes{ 0.0, 0.0 };
+    std::array<vtkSmartPointer<vtkImageData>, 2> pictures;
+    for (int c = 0; c < 2; ++c)
+    {
+      vtkNew<EA> mapper;
+      mapper->SetInputData(points);
+      mapper->UseJitteringOff();
+      mapper->SetPartitions(2, 2, 1);
+      vtkNew<vtkVolume> volume;
+      volume->SetMapper(mapper);
+      volume->SetProperty(c == 0 ? none.Get() : constant.Get());
+      renderer->AddVolume(volume);
+      window->Render();
+      pictures[c] = Grab(window);
+      bytes[c] = mapper->GetGPUMemoryBytes();
+      renderer->RemoveVolume(volume);
+    }
+    std::cout << "constant gradient opacity (stored: "
+              << (constant->HasGradientOpacity() ? "yes" : "no")
+              << "): " << Psnr(pictures[0], pictures[1]) << " dB, GPU bytes " << bytes[0] << " and "
+              << bytes[1] << "\n";
+    AVS_CHECK(constant->HasGradientOpacity());
+    AVS_CHECK(Psnr(pictures[0], pictures[1]) > 80.0);
+    AVS_CHECK(bytes[0] > 0.0);
+    AVS_CHECK(bytes[0] == bytes[1]);
   }
   // Anisotropic spacing (z three times x and y): the look-back layers are counted per axis
   // (fewer along z), and the split picture is still the unsplit one.
