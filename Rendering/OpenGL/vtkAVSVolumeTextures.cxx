@@ -163,63 +163,12 @@ void vtkAVSVolumeTextures::ReleaseScratch()
 
 namespace
 {
-// Writes the slices [z0, z1) of the scene's channels (the components, then the validity where
-// the layout puts it beside them) into `texels` as T, each value v stored as
+// Writes the slices [z0, z1) of the sub-box of `dimensions` voxels from `origin` (the whole
+// volume, or a brick: vtkAVSBricks) of the scene's channels (the components, then the validity
+// where the layout puts it beside them) into `texels` as T, x fastest, each value v stored as
 // round(format.Encode(v)) for normalized texels and as v for floats. The values are the scene's
-// grids, or, where a grid holds none (not converted on the host), what `source` reads, one
-// slice at a time.
-template<typename T>
-void PackSlab(const avs::VolumeScene& scene,
-  const vtkAVSVolumeTextures::ScalarSource& source,
-  const vtkAVSClassification::Layout& layout,
-  const vtkAVSTextureUpload::TexelFormat& format,
-  int z0,
-  int z1,
-  T* texels)
-{
-  const std::size_t slice = static_cast<std::size_t>(scene.Scalars.Geometry.Dimensions[0]) *
-    scene.Scalars.Geometry.Dimensions[1];
-  const int channels = layout.ScalarChannels();
-  std::vector<float> read;
-  for (int z = z0; z < z1; ++z)
-  {
-    const std::size_t begin = slice * z;
-    T* first = texels + static_cast<std::size_t>(channels) * slice * (z - z0);
-    for (int c = 0; c < channels; ++c)
-    {
-      const std::vector<float>& grid = c == layout.Components ? scene.Medium.Validity.Values
-        : c == 0                                              ? scene.Scalars.Values
-                 : scene.Medium.Components[c - 1].Values.Values;
-      const float* v = grid.empty() ? nullptr : grid.data() + begin;
-      if (!v)
-      {
-        read.resize(slice);
-        source.Read(c, begin, begin + slice, read.data());
-        v = read.data();
-      }
-      T* out = first + c;
-      if (format.IsNormalized())
-      {
-        const double top = static_cast<double>(format.Scale);
-        for (std::size_t i = 0; i < slice; ++i, out += channels)
-        {
-          *out = static_cast<T>(std::lround(std::clamp(format.Encode(v[i]), 0.0, top)));
-        }
-      }
-      else
-      {
-        for (std::size_t i = 0; i < slice; ++i, out += channels)
-        {
-          *out = static_cast<T>(v[i]);
-        }
-      }
-    }
-  }
-}
-
-// Writes the slices [z0, z1) of the sub-box of `dimensions` voxels from `origin` (a brick,
-// vtkAVSBricks) of the scene's channels into `texels` as T, x fastest, each value stored as
-// PackSlab stores it.
+// grids, or, where a grid holds none (not converted on the host), what `source` reads, one row
+// at a time.
 template<typename T>
 void PackBox(const avs::VolumeScene& scene,
   const vtkAVSVolumeTextures::ScalarSource& source,
@@ -233,6 +182,7 @@ void PackBox(const avs::VolumeScene& scene,
 {
   const std::array<int, 3>& d = scene.Scalars.Geometry.Dimensions;
   const int channels = layout.ScalarChannels();
+  const bool normalized = format.IsNormalized();
   const double top = static_cast<double>(format.Scale);
   std::vector<float> read;
   for (int c = 0; c < channels; ++c)
@@ -258,13 +208,52 @@ void PackBox(const avs::VolumeScene& scene,
         }
         for (int x = 0; x < dimensions[0]; ++x, out += channels)
         {
-          const float value = v[x];
-          *out = format.IsNormalized()
-            ? static_cast<T>(std::lround(std::clamp(format.Encode(value), 0.0, top)))
-            : static_cast<T>(value);
+          *out = normalized ? static_cast<T>(std::lround(std::clamp(format.Encode(v[x]), 0.0, top)))
+                            : static_cast<T>(v[x]);
         }
       }
     }
+  }
+}
+
+// PackBox into `texels` of the format's host type.
+void PackBoxAs(const avs::VolumeScene& scene,
+  const vtkAVSVolumeTextures::ScalarSource& source,
+  const vtkAVSClassification::Layout& layout,
+  const vtkAVSTextureUpload::TexelFormat& format,
+  const std::array<int, 3>& origin,
+  const std::array<int, 3>& dimensions,
+  int z0,
+  int z1,
+  void* texels)
+{
+  if (format.HostType == VTK_UNSIGNED_CHAR)
+  {
+    PackBox(scene,
+      source,
+      layout,
+      format,
+      origin,
+      dimensions,
+      z0,
+      z1,
+      static_cast<unsigned char*>(texels));
+  }
+  else if (format.HostType == VTK_UNSIGNED_SHORT)
+  {
+    PackBox(scene,
+      source,
+      layout,
+      format,
+      origin,
+      dimensions,
+      z0,
+      z1,
+      static_cast<unsigned short*>(texels));
+  }
+  else
+  {
+    PackBox(scene, source, layout, format, origin, dimensions, z0, z1, static_cast<float*>(texels));
   }
 }
 } // namespace
@@ -336,18 +325,15 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
     {
       return scene.Scalars.Values.data() + slice * z0; // the grid itself
     }
-    if (format.HostType == VTK_UNSIGNED_CHAR)
-    {
-      PackSlab(scene, source, layout, format, z0, z1, static_cast<unsigned char*>(texels));
-    }
-    else if (format.HostType == VTK_UNSIGNED_SHORT)
-    {
-      PackSlab(scene, source, layout, format, z0, z1, static_cast<unsigned short*>(texels));
-    }
-    else
-    {
-      PackSlab(scene, source, layout, format, z0, z1, static_cast<float*>(texels));
-    }
+    PackBoxAs(scene,
+      source,
+      layout,
+      format,
+      { 0, 0, 0 },
+      scene.Scalars.Geometry.Dimensions,
+      z0,
+      z1,
+      texels);
     return texels;
   };
   if (!vtkAVSTextureUpload::Upload(this->Window,
@@ -401,42 +387,7 @@ bool vtkAVSVolumeTextures::UploadBricks(const avs::VolumeScene& scene,
     const vtkAVSTextureUpload::SlabFill fill = [&scene, &source, &layout, &format, &brick](
                                                  int z0, int z1, void* texels) -> const void*
     {
-      if (format.HostType == VTK_UNSIGNED_CHAR)
-      {
-        PackBox(scene,
-          source,
-          layout,
-          format,
-          brick.Origin,
-          brick.Dimensions,
-          z0,
-          z1,
-          static_cast<unsigned char*>(texels));
-      }
-      else if (format.HostType == VTK_UNSIGNED_SHORT)
-      {
-        PackBox(scene,
-          source,
-          layout,
-          format,
-          brick.Origin,
-          brick.Dimensions,
-          z0,
-          z1,
-          static_cast<unsigned short*>(texels));
-      }
-      else
-      {
-        PackBox(scene,
-          source,
-          layout,
-          format,
-          brick.Origin,
-          brick.Dimensions,
-          z0,
-          z1,
-          static_cast<float*>(texels));
-      }
+      PackBoxAs(scene, source, layout, format, brick.Origin, brick.Dimensions, z0, z1, texels);
       return texels;
     };
     if (!vtkAVSTextureUpload::Upload(this->Window,
