@@ -9,6 +9,9 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include <array>
+#include <functional>
+
 bool vtkAVSLightVolumePass::Build(int maximumTauNodes, bool software)
 {
   this->Program = vtkAVSShaderAssembly::BuildComputeProgram(
@@ -21,6 +24,50 @@ void vtkAVSLightVolumePass::ReleaseGraphicsResources(bool context)
   vtkAVSShaderAssembly::ReleaseComputeProgram(this->Program, context);
 }
 
+bool vtkAVSLightVolumePass::Dispatch(vtkAVSVolumeTextures& textures,
+  int slot,
+  bool copyAveraged,
+  const std::function<void(const std::function<int(const char*)>&)>& uniforms,
+  const char* what,
+  std::string& error)
+{
+  const std::array<int, 3> d = textures.LightTextureDimensions;
+  const GLuint program = this->Program;
+  vtkAVSRenderPasses::DiscardErrors(); // the check at the end is of this pass alone
+  // The shader cache must rebind its own program afterwards.
+  textures.Window->GetShaderCache()->ReleaseCurrentShader();
+  glUseProgram(program);
+  const std::function<int(const char*)> location = [program](const char* name)
+  { return glGetUniformLocation(program, name); };
+  // Channel c of texture t holds slot 4 t + c.
+  glBindImageTexture(0,
+    textures.LightVolumes[slot / 4]->GetHandle(),
+    0,
+    GL_TRUE,
+    0,
+    GL_READ_WRITE,
+    textures.LightVolumeFormat());
+  glUniform1i(location("u_channel"), slot % 4);
+  glUniform1i(location("u_copyAveraged"), copyAveraged ? 1 : 0);
+  glUniform3i(location("u_targetDimensions"), d[0], d[1], d[2]);
+  textures.AveragedExtinction->Activate();
+  glUniform1i(location("u_averaged"), textures.AveragedExtinction->GetTextureUnit());
+  uniforms(location);
+  glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8),
+    static_cast<GLuint>((d[1] + 7) / 8),
+    static_cast<GLuint>(d[2]));
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, textures.LightVolumeFormat());
+  glUseProgram(0);
+  textures.AveragedExtinction->Deactivate();
+  if (const GLenum status = glGetError())
+  {
+    error = std::string(what) + " failed (GL error " + std::to_string(status) + ")";
+    return false;
+  }
+  return true;
+}
+
 bool vtkAVSLightVolumePass::Run(vtkAVSVolumeTextures& textures,
   int index,
   const avs::GridGeometry& lightGrid,
@@ -29,77 +76,49 @@ bool vtkAVSLightVolumePass::Run(vtkAVSVolumeTextures& textures,
   avs::TubeLaw law,
   std::string& error)
 {
-  const auto& d = lightGrid.Dimensions;
-  // Channel c of texture t holds light 4 t + c.
-  const int texture = index / 4;
-  if (!textures.EnsureLightTextures(d, texture + 1, error))
+  if (!textures.EnsureLightTextures(lightGrid.Dimensions, index / 4 + 1, error))
   {
     return false;
   }
-  const GLuint program = this->Program;
-  vtkAVSRenderPasses::DiscardErrors(); // the check at the end is of this pass alone
-  // The shader cache must rebind its own program afterwards.
-  textures.Window->GetShaderCache()->ReleaseCurrentShader();
-  glUseProgram(program);
-  auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
-  glBindImageTexture(0,
-    textures.LightVolumes[texture]->GetHandle(),
-    0,
-    GL_TRUE,
-    0,
-    GL_READ_WRITE,
-    textures.LightVolumeFormat());
-  glUniform1i(location("u_channel"), index % 4);
-  glUniform1i(location("u_copyAveraged"), 0);
   if (index == textures.AveragedSlot)
   {
     textures.AveragedSlot = -1; // overwritten
   }
-  glUniform3i(location("u_targetDimensions"), d[0], d[1], d[2]);
-  glUniform3f(location("u_targetSpacing"),
-    static_cast<float>(lightGrid.Spacing.x),
-    static_cast<float>(lightGrid.Spacing.y),
-    static_cast<float>(lightGrid.Spacing.z));
-  textures.AveragedExtinction->Activate();
-  glUniform1i(location("u_averaged"), textures.AveragedExtinction->GetTextureUnit());
-  const avs::Vec3 extent = lightGrid.LocalExtent();
-  glUniform3f(location("u_extent"),
-    static_cast<float>(extent.x),
-    static_cast<float>(extent.y),
-    static_cast<float>(extent.z));
-  glUniform1fv(
-    location("u_logGain"), static_cast<GLsizei>(textures.LogGain.size()), textures.LogGain.data());
-  glUniform1i(location("u_tauNodes"), static_cast<GLint>(textures.LogGain.size()));
-  glUniform1f(location("u_tauMaximum"), textures.TableTauMaximum);
-  glUniform1f(location("u_radius"), static_cast<float>(radius));
-  glUniform1i(location("u_directBeam"), law == avs::TubeLaw::DirectBeam ? 1 : 0);
-  const bool positional = light.Type == avs::LightType::Positional;
-  const avs::Vec3 l = positional
-    ? lightGrid.WorldToLocal(light.Position)
-    : lightGrid.WorldToLocalDirection(avs::Normalize(light.FocalPoint - light.Position));
-  glUniform1i(location("u_positional"), positional ? 1 : 0);
-  glUniform3f(
-    location("u_light"), static_cast<float>(l.x), static_cast<float>(l.y), static_cast<float>(l.z));
-  glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8),
-    static_cast<GLuint>((d[1] + 7) / 8),
-    static_cast<GLuint>(d[2]));
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, textures.LightVolumeFormat());
-  glUseProgram(0);
-  textures.AveragedExtinction->Deactivate();
-  if (const GLenum status = glGetError())
+  auto uniforms = [&](const std::function<int(const char*)>& location)
   {
-    error = "the light-volume compute pass failed (GL error " + std::to_string(status) + ")";
-    return false;
-  }
-  return true;
+    glUniform3f(location("u_targetSpacing"),
+      static_cast<float>(lightGrid.Spacing.x),
+      static_cast<float>(lightGrid.Spacing.y),
+      static_cast<float>(lightGrid.Spacing.z));
+    const avs::Vec3 extent = lightGrid.LocalExtent();
+    glUniform3f(location("u_extent"),
+      static_cast<float>(extent.x),
+      static_cast<float>(extent.y),
+      static_cast<float>(extent.z));
+    glUniform1fv(location("u_logGain"),
+      static_cast<GLsizei>(textures.LogGain.size()),
+      textures.LogGain.data());
+    glUniform1i(location("u_tauNodes"), static_cast<GLint>(textures.LogGain.size()));
+    glUniform1f(location("u_tauMaximum"), textures.TableTauMaximum);
+    glUniform1f(location("u_radius"), static_cast<float>(radius));
+    glUniform1i(location("u_directBeam"), law == avs::TubeLaw::DirectBeam ? 1 : 0);
+    const bool positional = light.Type == avs::LightType::Positional;
+    const avs::Vec3 l = positional
+      ? lightGrid.WorldToLocal(light.Position)
+      : lightGrid.WorldToLocalDirection(avs::Normalize(light.FocalPoint - light.Position));
+    glUniform1i(location("u_positional"), positional ? 1 : 0);
+    glUniform3f(location("u_light"),
+      static_cast<float>(l.x),
+      static_cast<float>(l.y),
+      static_cast<float>(l.z));
+  };
+  return this->Dispatch(textures, index, false, uniforms, "the light-volume compute pass", error);
 }
 
 bool vtkAVSLightVolumePass::CopyAveraged(vtkAVSVolumeTextures& textures,
   int slot,
   std::string& error)
 {
-  const std::array<int, 3> d = textures.LightTextureDimensions;
   const int texture = slot / 4;
   if (slot < 0 || texture >= vtkAVSVolumeTextures::NumberOfLightTextures ||
     !textures.LightVolumes[texture] || !textures.AveragedExtinction)
@@ -107,33 +126,14 @@ bool vtkAVSLightVolumePass::CopyAveraged(vtkAVSVolumeTextures& textures,
     error = "no light-volume channel to hold the averaged extinction";
     return false;
   }
-  const GLuint program = this->Program;
-  vtkAVSRenderPasses::DiscardErrors();
-  textures.Window->GetShaderCache()->ReleaseCurrentShader();
-  glUseProgram(program);
-  auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
-  glBindImageTexture(0,
-    textures.LightVolumes[texture]->GetHandle(),
-    0,
-    GL_TRUE,
-    0,
-    GL_READ_WRITE,
-    textures.LightVolumeFormat());
-  glUniform1i(location("u_channel"), slot % 4);
-  glUniform1i(location("u_copyAveraged"), 1);
-  glUniform3i(location("u_targetDimensions"), d[0], d[1], d[2]);
-  textures.AveragedExtinction->Activate();
-  glUniform1i(location("u_averaged"), textures.AveragedExtinction->GetTextureUnit());
-  glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8),
-    static_cast<GLuint>((d[1] + 7) / 8),
-    static_cast<GLuint>(d[2]));
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, textures.LightVolumeFormat());
-  glUseProgram(0);
-  textures.AveragedExtinction->Deactivate();
-  if (const GLenum status = glGetError())
+  if (!this->Dispatch(
+        textures,
+        slot,
+        true,
+        [](const std::function<int(const char*)>&) {},
+        "copying the averaged extinction",
+        error))
   {
-    error = "copying the averaged extinction failed (GL error " + std::to_string(status) + ")";
     return false;
   }
   textures.AveragedSlot = slot;

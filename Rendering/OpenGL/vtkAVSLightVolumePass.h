@@ -16,6 +16,7 @@
 #include "LightVolume.h"
 #include "Lights.h"
 
+#include <functional>
 #include <string>
 
 class vtkAVSVolumeTextures;
@@ -49,6 +50,16 @@ public:
   void ReleaseGraphicsResources(bool context);
 
 private:
+  /// The program over the light grid into slot `slot` of the packed textures (channel slot % 4
+  /// of texture slot / 4): tube marching, or the averaged extinction's copy; `uniforms` sets
+  /// what the pass needs beyond the target, the channel and the averaged extinction. `what`
+  /// names the pass in a GL error.
+  bool Dispatch(vtkAVSVolumeTextures& textures,
+    int slot,
+    bool copyAveraged,
+    const std::function<void(const std::function<int(const char*)>&)>& uniforms,
+    const char* what,
+    std::string& error);
   unsigned int Program = 0; ///< GL name of the light-volume compute program
 };
 
