@@ -185,12 +185,14 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   glDispatchCompute(groups[0], groups[1], groups[2]);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   glUniform1i(location("u_stage"), 1);
+  // A half-sweep's invocations cover every other cell of a row (the shader's main).
+  const GLuint halfRow = static_cast<GLuint>(((d[0] + 1) / 2 + 7) / 8);
   for (int it = 0; it < p.DiffusionIterations; ++it)
   {
     for (int colour = 0; colour < 2; ++colour)
     {
       glUniform1i(location("u_colour"), colour);
-      glDispatchCompute(groups[0], groups[1], groups[2]);
+      glDispatchCompute(halfRow, groups[1], groups[2]);
       glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
   }

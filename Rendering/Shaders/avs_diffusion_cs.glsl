@@ -5,17 +5,18 @@
 // (lights too: the free irradiance depends only on distances and the cone). Two stages:
 //  u_stage 0, the source: per cell, q = sigma~t sum_j w_j E_j^free T~_j into u_source (T~_j of
 //    direct-beam tubes taken from the ball's entry on to the cell: exp(-r sigma~t))
-//    (rgb), and (phi, sigma~t) = (0, sigma~t) into u_phi, from the averaged extinction and the
-//    packed light volumes on the light grid;
-//  u_stage 1, one SOR half-sweep: the cells with (i + j + k) % 2 == u_colour relax
+//    (rgb) with sigma_a (a), and (phi, D) = (0, D) into u_phi (D = 0: vacuum), from the
+//    averaged extinction and the packed light volumes on the light grid;
+//  u_stage 1, one SOR half-sweep (dispatched over half the x range): the cells with
+//    (i + j + k) % 2 == u_colour relax
 //    phi <- (1 - w) phi + w (q + sum_f K_f phi_f) / (sigma_a + sum_f K_f + leaks), with the
 //    harmonic-mean couplings of the CPU code and Marshak's leak towards vacuum and the border.
 // The ray caster defines AVS_NUMBER_OF_LIGHTS, AVS_POSITIONAL_LIGHTS and AVS_SPOT_LIGHTS, and
 // puts avs_lights.glsl (LightAt) before this text.
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
-layout(rgba32f, binding = 0) uniform image3D u_phi;    // rgb: phi, a: sigma~t
-layout(rgba32f, binding = 1) uniform image3D u_source; // rgb: q
+layout(rgba32f, binding = 0) uniform image3D u_phi;    // rgb: phi, a: D (0: vacuum)
+layout(rgba32f, binding = 1) uniform image3D u_source; // rgb: q, a: sigma_a
 uniform int u_stage;
 uniform int u_colour;
 uniform ivec3 u_dimensions;      // diffusion grid
@@ -37,6 +38,13 @@ float Tube(int j, vec4 t0, vec4 t1)
   return j < 4 ? t0[clamp(j, 0, 3)] : t1[clamp(j - 4, 0, 3)];
 }
 
+// D of a cell of averaged extinction sigma; 0 for vacuum (sigma' h below VacuumOpticalDepth).
+float Diffusivity(float sigma)
+{
+  float reduced = (1.0 - u_albedo * u_anisotropy) * max(sigma, 0.0);
+  return reduced >= u_vacuum ? 1.0 / (3.0 * max(reduced, 1.0 / u_transportLimit)) : 0.0;
+}
+
 void Source(ivec3 cell)
 {
   vec3 f = vec3(cell) / max(vec3(u_dimensions - 1), vec3(1.0));
@@ -56,27 +64,21 @@ void Source(ivec3 cell)
 #define AVS_ADD_SOURCE(j) LightAt(j, x, propagation, irradiance); e += irradiance * (u_sourceWeight[j] * exp(-u_toCentre[j] * sigma) * Tube(j, tubes0, tubes1));
     AVS_FOR_EACH_LIGHT(AVS_ADD_SOURCE)
   }
-  imageStore(u_source, cell, vec4(sigma * e, 0.0));
-  imageStore(u_phi, cell, vec4(0.0, 0.0, 0.0, sigma));
-}
-
-// D of a cell of averaged extinction sigma; 0 for vacuum (sigma' h below VacuumOpticalDepth).
-float Diffusivity(float sigma)
-{
-  float reduced = (1.0 - u_albedo * u_anisotropy) * max(sigma, 0.0);
-  return reduced >= u_vacuum ? 1.0 / (3.0 * max(reduced, 1.0 / u_transportLimit)) : 0.0;
+  imageStore(u_source, cell, vec4(sigma * e, (1.0 - u_albedo) * max(sigma, 0.0)));
+  imageStore(u_phi, cell, vec4(0.0, 0.0, 0.0, Diffusivity(sigma)));
 }
 
 void Relax(ivec3 cell)
 {
   vec4 here = imageLoad(u_phi, cell);
-  float d = Diffusivity(here.a);
+  float d = here.a;
   if (!(d > 0.0))
   {
     return;
   }
-  float diagonal = (1.0 - u_albedo) * max(here.a, 0.0);
-  vec3 sum = imageLoad(u_source, cell).rgb;
+  vec4 source = imageLoad(u_source, cell);
+  float diagonal = source.a;
+  vec3 sum = source.rgb;
   for (int f = 0; f < 6; ++f)
   {
     int axis = f / 2;
@@ -85,7 +87,7 @@ void Relax(ivec3 cell)
     float h = u_spacing[axis];
     bool inside = m[axis] >= 0 && m[axis] < u_dimensions[axis];
     vec4 there = inside ? imageLoad(u_phi, m) : vec4(0.0);
-    float dn = inside ? Diffusivity(there.a) : 0.0;
+    float dn = there.a;
     if (dn > 0.0)
     {
       float k = 2.0 * d * dn / (d + dn) / (h * h);
@@ -104,6 +106,12 @@ void Relax(ivec3 cell)
 void main()
 {
   ivec3 cell = ivec3(gl_GlobalInvocationID);
+  if (u_stage != 0)
+  {
+    // A half-sweep is dispatched over half the x range: invocation x relaxes the cell 2x or
+    // 2x + 1 of this row whose colour is u_colour, so no invocation idles beside a busy one.
+    cell.x = 2 * cell.x + ((cell.y + cell.z + u_colour) & 1);
+  }
   if (any(greaterThanEqual(cell, u_dimensions)))
   {
     return;
@@ -112,7 +120,7 @@ void main()
   {
     Source(cell);
   }
-  else if (((cell.x + cell.y + cell.z) & 1) == u_colour)
+  else
   {
     Relax(cell);
   }
