@@ -111,6 +111,7 @@ struct vtkAVSVolumeMapper::Internals
   bool DiffuseUploaded = false;
   int DiffuseOnGPU = -1;
   int DiffuseIterations = -1;
+  int DiffuseCoarseIterations = -1;
   int DiffuseGridMaximum = -1;
 
   // Ambient occlusion.

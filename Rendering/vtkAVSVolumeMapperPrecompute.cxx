@@ -264,6 +264,7 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
   }
   if (rebuilt || !in.DiffuseUploaded || in.DiffuseOnGPU != (gpu ? 1 : 0) ||
     in.DiffuseIterations != rp.DiffusionIterations ||
+    in.DiffuseCoarseIterations != rp.DiffusionCoarseIterations ||
     in.DiffuseGridMaximum != rp.DiffusionVolumeMaximumDimension)
   {
     std::vector<avs::Light> lights;
@@ -294,6 +295,7 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
     in.DiffuseOnGPU = gpu ? 1 : 0;
     in.DiffuseUploaded = true;
     in.DiffuseIterations = rp.DiffusionIterations;
+    in.DiffuseCoarseIterations = rp.DiffusionCoarseIterations;
     in.DiffuseGridMaximum = rp.DiffusionVolumeMaximumDimension;
     ++this->NumberOfDiffusionRebuilds;
   }

@@ -1,5 +1,6 @@
 #include "DiffuseFluence.h"
 
+#include "AveragedExtinction.h"
 #include "GridFill.h"
 #include "Parallel.h"
 
@@ -137,7 +138,8 @@ std::vector<Cell> Operator(const Grid& averaged, const DiffusionSettings& s)
 std::array<Grid, 3> SolveDiffusion(const Grid& averaged,
   const std::array<Grid, 3>& source,
   const DiffusionSettings& s,
-  double* residual)
+  double* residual,
+  const std::array<Grid, 3>* initial)
 {
   const GridGeometry& g = averaged.Geometry;
   const auto& n = g.Dimensions;
@@ -150,6 +152,17 @@ std::array<Grid, 3> SolveDiffusion(const Grid& averaged,
     static_cast<std::ptrdiff_t>(n[0]) * n[1] };
   const double omega = std::clamp(s.Relaxation, 0.05, 1.95);
   std::array<Grid, 3> phi{ Grid(g), Grid(g), Grid(g) };
+  if (initial)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const std::vector<float>& from = (*initial)[c].Values;
+      for (std::size_t index = 0; index < cells.size() && index < from.size(); ++index)
+      {
+        phi[c].Values[index] = cells[index].Diagonal > 0.0 ? from[index] : 0.0f;
+      }
+    }
+  }
   for (int c = 0; c < 3; ++c)
   {
     const std::vector<float>& q = source[c].Values;
@@ -210,6 +223,57 @@ std::array<Grid, 3> SolveDiffusion(const Grid& averaged,
       norm += std::abs(q[index]);
     }
     *residual = norm > 0.0 ? r / norm : 0.0;
+  }
+  return phi;
+}
+
+std::vector<GridGeometry> DiffusionLevels(const GridGeometry& finest)
+{
+  std::vector<GridGeometry> levels{ finest };
+  for (;;)
+  {
+    const auto& n = levels.back().Dimensions;
+    if (std::max({ n[0], n[1], n[2] }) <= NestedCoarsestDimension)
+    {
+      return levels;
+    }
+    std::array<int, 3> coarser = n;
+    for (int a = 0; a < 3; ++a)
+    {
+      coarser[a] = n[a] > 2 ? (n[a] + 1) / 2 : n[a];
+    }
+    levels.push_back(levels.back().Resampled(coarser));
+  }
+}
+
+std::array<Grid, 3> ComputeDiffusion(const Grid& averaged,
+  const std::vector<Light>& lights,
+  const std::vector<Grid>& lightVolumes,
+  const GridGeometry& target,
+  const DiffusionSettings& settings,
+  double* residual)
+{
+  const std::vector<GridGeometry> levels = DiffusionLevels(target);
+  std::array<Grid, 3> phi;
+  for (std::size_t l = levels.size(); l-- > 0;)
+  {
+    const GridGeometry& g = levels[l];
+    DiffusionSettings level = settings;
+    level.Iterations = l == 0 ? settings.Iterations : settings.CoarseIterations;
+    const Grid sigma = ResampleTrilinear(averaged, g);
+    const std::array<Grid, 3> q = DiffusionSource(averaged, lights, lightVolumes, g, settings);
+    if (l + 1 == levels.size())
+    {
+      phi = SolveDiffusion(sigma, q, level, l == 0 ? residual : nullptr);
+      continue;
+    }
+    // The coarser level's phi, trilinear at this level's points (its box is the same).
+    std::array<Grid, 3> start;
+    for (int c = 0; c < 3; ++c)
+    {
+      start[c] = ResampleTrilinear(phi[c], g);
+    }
+    phi = SolveDiffusion(sigma, q, level, l == 0 ? residual : nullptr, &start);
   }
   return phi;
 }

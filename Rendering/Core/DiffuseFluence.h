@@ -11,7 +11,8 @@
 // positional ones) and E_j^free the lights' free irradiance (RGB: phi has three channels). D is
 // limited to TransportLengthLimit / 3; cells with sigma' h < VacuumOpticalDepth are vacuum; a face
 // between the medium and vacuum (or the grid's border) carries Marshak's condition phi = 2 D
-// dphi/dn. The ray caster adds T (1 - exp(-sigma_t dt)) albedo c phi / (4 pi) per sample.
+// dphi/dn; the solve runs on a hierarchy of grids from coarse to fine (ComputeDiffusion). The ray
+// caster adds T (1 - exp(-sigma_t dt)) albedo c phi / (4 pi) per sample.
 #ifndef avs_DiffuseFluence_h
 #define avs_DiffuseFluence_h
 
@@ -30,7 +31,8 @@ struct DiffusionSettings
 {
   double Albedo = 0.9;
   double Anisotropy = 0.0;
-  int Iterations = 64;               ///< red-black SOR sweeps (each: red then black cells)
+  int Iterations = 12;               ///< red-black SOR sweeps (each: red then black cells)
+  int CoarseIterations = 32;         ///< the sweeps on each coarser level (ComputeDiffusion)
   double Relaxation = 1.85;          ///< SOR factor omega in (0, 2)
   double TransportLengthLimit = 1.0; ///< 1 / sigma' at most (world units; 8 r in the renderers)
   /// r: a light volume holds T where the light enters the ball around x; a direct-beam tube's
@@ -67,8 +69,31 @@ std::array<Grid, 3> DiffusionSource(const Grid& averaged,
 
 /// phi (RGB) on the source's grid. `averaged` is the averaged extinction on the same grid.
 /// `residual`, if given, receives the final relative residual |q - A phi|_1 / |q|_1 (channel 0).
+/// The sweeps start from `initial` (three grids on the same grid) where given, else from 0;
+/// vacuum cells hold 0 either way.
 std::array<Grid, 3> SolveDiffusion(const Grid& averaged,
   const std::array<Grid, 3>& source,
+  const DiffusionSettings& settings,
+  double* residual = nullptr,
+  const std::array<Grid, 3>* initial = nullptr);
+
+/// The levels of the nested solve, finest (`finest` itself) first: each next one halves every
+/// axis of more than two points ((n + 1) / 2, over the same box), down to the first level with
+/// at most NestedCoarsestDimension points on every axis.
+constexpr int NestedCoarsestDimension = 8;
+std::vector<GridGeometry> DiffusionLevels(const GridGeometry& finest);
+
+/// The extended model's whole solve on `target` (DiffusionGeometry), by nested iteration: on
+/// each level from the coarsest up, the averaged extinction resampled there, the source
+/// (DiffusionSource) evaluated there, and `settings.CoarseIterations` sweeps (on the finest
+/// level `settings.Iterations`) starting from the coarser level's phi interpolated trilinearly
+/// onto it (0 on the coarsest). The light diffuses over the coarse levels, where a sweep reaches
+/// far and costs little, and the finer sweeps only correct what the coarser grid could not
+/// resolve. `averaged` and `lightVolumes` are on the light grid.
+std::array<Grid, 3> ComputeDiffusion(const Grid& averaged,
+  const std::vector<Light>& lights,
+  const std::vector<Grid>& lightVolumes,
+  const GridGeometry& target,
   const DiffusionSettings& settings,
   double* residual = nullptr);
 

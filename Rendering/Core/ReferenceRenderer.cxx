@@ -66,13 +66,13 @@ std::vector<Grid> ComputeDiffuse(const Grid& averaged,
   settings.Albedo = p.Albedo;
   settings.Anisotropy = p.Anisotropy;
   settings.Iterations = p.DiffusionIterations;
+  settings.CoarseIterations = p.DiffusionCoarseIterations;
   settings.TransportLengthLimit = TransportLengthLimitInRadii * p.AmbientRadius;
   settings.AmbientRadius = p.AmbientRadius;
   const GridGeometry target =
     DiffusionGeometry(averaged.Geometry, p.DiffusionVolumeMaximumDimension);
-  const Grid sigma = ResampleTrilinear(averaged, target);
-  const std::array<Grid, 3> q = DiffusionSource(averaged, lights, lightVolumes, target, settings);
-  std::array<Grid, 3> phi = SolveDiffusion(sigma, q, settings, residual);
+  std::array<Grid, 3> phi =
+    ComputeDiffusion(averaged, lights, lightVolumes, target, settings, residual);
   return { std::move(phi[0]), std::move(phi[1]), std::move(phi[2]) };
 }
 

@@ -40,7 +40,8 @@ struct ScatteringParameters
   // The extended model (DiffuseFluence.h).
   ScatteringModel Model = ScatteringModel::Paper;
   int DiffusionVolumeMaximumDimension = 64; ///< the diffusion grid: the light grid, capped
-  int DiffusionIterations = 64;             ///< red-black SOR sweeps of the diffusion solve
+  int DiffusionIterations = 12;             ///< red-black SOR sweeps on the diffusion grid
+  int DiffusionCoarseIterations = 32; ///< the sweeps on each coarser level of the nested solve
 
   // Ambient occlusion (section 7).
   double OcclusionRadius = 0.0;   ///< R in data units; 0: the ambient radius
@@ -99,6 +100,7 @@ struct ScatteringParameters
     p.OcclusionVolumeMaximumDimension = std::max(2, p.OcclusionVolumeMaximumDimension);
     p.DiffusionVolumeMaximumDimension = std::max(2, p.DiffusionVolumeMaximumDimension);
     p.DiffusionIterations = std::clamp(p.DiffusionIterations, 0, 4096);
+    p.DiffusionCoarseIterations = std::clamp(p.DiffusionCoarseIterations, 0, 4096);
     return p;
   }
 };

@@ -105,12 +105,21 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
       return false;
     }
   }
-  const std::array<int, 3> d = grid.Dimensions;
-  if (!this->Allocate(window, this->Texture, d, nullptr, error) ||
-    !this->Allocate(window, this->Source, d, nullptr, error))
+  // The nested solve's levels (DiffusionLevels), finest first: the finest is the texture the
+  // ray caster reads, the coarser ones are held with their sources for the next solve.
+  const std::vector<avs::GridGeometry> levels = avs::DiffusionLevels(grid);
+  this->Coarser.resize(2 * (levels.size() - 1));
+  for (std::size_t l = 0; l < levels.size(); ++l)
   {
-    return false;
+    vtkSmartPointer<vtkTextureObject>& phi = l == 0 ? this->Texture : this->Coarser[2 * l - 2];
+    vtkSmartPointer<vtkTextureObject>& q = l == 0 ? this->Source : this->Coarser[2 * l - 1];
+    if (!this->Allocate(window, phi, levels[l].Dimensions, nullptr, error) ||
+      !this->Allocate(window, q, levels[l].Dimensions, nullptr, error))
+    {
+      return false;
+    }
   }
+  const std::array<int, 3> d = grid.Dimensions;
   this->Dimensions = d;
 
   const GLuint program = this->Program;
@@ -148,11 +157,6 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   glUniform1fv(location("u_lightExponent"), 8, exponent);
   glUniform1fv(location("u_sourceWeight"), 8, weight);
   glUniform1fv(location("u_toCentre"), 8, toCentre);
-  glUniform3i(location("u_dimensions"), d[0], d[1], d[2]);
-  glUniform3f(location("u_spacing"),
-    static_cast<float>(grid.Spacing.x),
-    static_cast<float>(grid.Spacing.y),
-    static_cast<float>(grid.Spacing.z));
   glUniform3f(location("u_lightDimensions"),
     static_cast<float>(lightDimensions[0]),
     static_cast<float>(lightDimensions[1]),
@@ -162,9 +166,6 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   glUniform1f(location("u_relaxation"), static_cast<float>(avs::DiffusionSettings().Relaxation));
   glUniform1f(location("u_transportLimit"),
     static_cast<float>(avs::TransportLengthLimitInRadii * p.AmbientRadius));
-  glUniform1f(location("u_vacuum"),
-    static_cast<float>(
-      avs::VacuumOpticalDepth * 3.0 / (grid.Spacing.x + grid.Spacing.y + grid.Spacing.z)));
   averaged->Activate();
   glUniform1i(location("u_averaged"), averaged->GetTextureUnit());
   vtkTextureObject* first = lights0 ? lights0 : averaged;
@@ -176,29 +177,53 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
     second->Activate();
   }
   glUniform1i(location("u_lightVolumes1"), second->GetTextureUnit());
-  glBindImageTexture(0, this->Texture->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
-  glBindImageTexture(1, this->Source->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
-  const GLuint groups[3] = { static_cast<GLuint>((d[0] + 7) / 8),
-    static_cast<GLuint>((d[1] + 7) / 8),
-    static_cast<GLuint>(d[2]) };
-  glUniform1i(location("u_stage"), 0);
-  glDispatchCompute(groups[0], groups[1], groups[2]);
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  glUniform1i(location("u_stage"), 1);
-  // A half-sweep's invocations cover every other cell of a row (the shader's main).
-  const GLuint halfRow = static_cast<GLuint>(((d[0] + 1) / 2 + 7) / 8);
-  for (int it = 0; it < p.DiffusionIterations; ++it)
+  // Coarsest level first; each starts from the coarser one's phi (the shader's Coarser), with
+  // DiffusionCoarseIterations sweeps, the finest with DiffusionIterations.
+  for (std::size_t l = levels.size(); l-- > 0;)
   {
-    for (int colour = 0; colour < 2; ++colour)
+    const avs::GridGeometry& level = levels[l];
+    const std::array<int, 3>& n = level.Dimensions;
+    vtkTextureObject* phi = l == 0 ? this->Texture : this->Coarser[2 * l - 2];
+    vtkTextureObject* q = l == 0 ? this->Source : this->Coarser[2 * l - 1];
+    vtkTextureObject* coarser = l + 1 < levels.size() ? this->Coarser[2 * l].Get() : phi;
+    glUniform3i(location("u_dimensions"), n[0], n[1], n[2]);
+    glUniform3f(location("u_spacing"),
+      static_cast<float>(level.Spacing.x),
+      static_cast<float>(level.Spacing.y),
+      static_cast<float>(level.Spacing.z));
+    glUniform1f(location("u_vacuum"),
+      static_cast<float>(
+        avs::VacuumOpticalDepth * 3.0 / (level.Spacing.x + level.Spacing.y + level.Spacing.z)));
+    glUniform1i(location("u_hasCoarser"), l + 1 < levels.size() ? 1 : 0);
+    const std::array<int, 3> c = l + 1 < levels.size() ? levels[l + 1].Dimensions : n;
+    glUniform3i(location("u_coarserDimensions"), c[0], c[1], c[2]);
+    glBindImageTexture(0, phi->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glBindImageTexture(1, q->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glBindImageTexture(2, coarser->GetHandle(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+    const GLuint groups[3] = { static_cast<GLuint>((n[0] + 7) / 8),
+      static_cast<GLuint>((n[1] + 7) / 8),
+      static_cast<GLuint>(n[2]) };
+    glUniform1i(location("u_stage"), 0);
+    glDispatchCompute(groups[0], groups[1], groups[2]);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glUniform1i(location("u_stage"), 1);
+    // A half-sweep's invocations cover every other cell of a row (the shader's main).
+    const GLuint halfRow = static_cast<GLuint>(((n[0] + 1) / 2 + 7) / 8);
+    const int sweeps = l == 0 ? p.DiffusionIterations : p.DiffusionCoarseIterations;
+    for (int it = 0; it < sweeps; ++it)
     {
-      glUniform1i(location("u_colour"), colour);
-      glDispatchCompute(halfRow, groups[1], groups[2]);
-      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+      for (int colour = 0; colour < 2; ++colour)
+      {
+        glUniform1i(location("u_colour"), colour);
+        glDispatchCompute(halfRow, groups[1], groups[2]);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+      }
     }
   }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
   glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glBindImageTexture(2, 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
   glUseProgram(0);
   averaged->Deactivate();
   first->Deactivate();
@@ -238,14 +263,18 @@ void vtkAVSDiffuseVolume::Unbind()
 
 void vtkAVSDiffuseVolume::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (auto* t : { &this->Texture, &this->Source })
+  this->Coarser.push_back(this->Texture);
+  this->Coarser.push_back(this->Source);
+  for (vtkSmartPointer<vtkTextureObject>& t : this->Coarser)
   {
-    if (*t)
+    if (t)
     {
-      (*t)->ReleaseGraphicsResources(window);
+      t->ReleaseGraphicsResources(window);
     }
-    *t = nullptr;
   }
+  this->Coarser.clear();
+  this->Texture = nullptr;
+  this->Source = nullptr;
   // Without a window its context took the program with it: the name is only forgotten.
   vtkAVSShaderAssembly::ReleaseComputeProgram(this->Program, window != nullptr);
   this->ProgramDefines.clear();

@@ -38,9 +38,11 @@ public:
   bool Upload(vtkOpenGLRenderWindow* window, const std::vector<avs::Grid>& phi, std::string& error);
   /// The same solve on the GPU (the caller checked for compute shaders): the source from the
   /// averaged extinction and the packed light volumes on the light grid (textures of the ray
-  /// caster; `lights1` may be null for up to four lights), then `resolved.DiffusionIterations`
-  /// red-black SOR sweeps, into the texture on `grid` (DiffusionGeometry). `lights` are in the
-  /// data's frame, as for the light volumes.
+  /// caster; `lights1` may be null for up to four lights), then the red-black SOR
+  /// sweeps of the nested solve (avs::ComputeDiffusion: `resolved.DiffusionCoarseIterations` per
+  /// coarser level, `resolved.DiffusionIterations` on the finest), into the
+  /// texture on `grid` (DiffusionGeometry). `lights` are in the data's frame, as for the light
+  /// volumes.
   bool Compute(vtkOpenGLRenderWindow* window,
     const avs::GridGeometry& grid,
     const std::array<int, 3>& lightDimensions,
@@ -67,7 +69,9 @@ private:
     std::string& error);
   vtkSmartPointer<vtkTextureObject> Texture;
   vtkSmartPointer<vtkTextureObject> Source; ///< the GPU solve's q
-  unsigned int Program = 0;                 ///< the GPU solve's program, for ProgramDefines
+  /// The nested solve's coarser levels (DiffusionLevels 1, 2, ...): phi and q of each.
+  std::vector<vtkSmartPointer<vtkTextureObject>> Coarser;
+  unsigned int Program = 0; ///< the GPU solve's program, for ProgramDefines
   std::string ProgramDefines;
   std::array<int, 3> Dimensions{ 0, 0, 0 };
 };

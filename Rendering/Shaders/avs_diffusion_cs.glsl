@@ -3,10 +3,11 @@
 // which the tests hold this one against; ARCHITECTURE.md, "Beyond the paper", has the model).
 // The diffusion grid spans the data's lattice box; positions are in the data's local frame
 // (lights too: the free irradiance depends only on distances and the cone). Two stages:
-//  u_stage 0, the source: per cell, q = sigma~t sum_j w_j E_j^free T~_j into u_source (T~_j of
-//    direct-beam tubes taken from the ball's entry on to the cell: exp(-r sigma~t))
-//    (rgb) with sigma_a (a), and (phi, D) = (0, D) into u_phi (D = 0: vacuum), from the
-//    averaged extinction and the packed light volumes on the light grid;
+//  u_stage 0, the source of one level of the nested solve: per cell, q = sigma~t sum_j w_j
+//    E_j^free T~_j into u_source (T~_j of direct-beam tubes taken from the ball's entry on to the
+//    cell: exp(-r sigma~t)) (rgb) with sigma_a (a), and (phi, D) into u_phi (D = 0: vacuum), from
+//    the averaged extinction and the packed light volumes on the light grid; phi starts from the
+//    coarser level's, interpolated (0 on the coarsest level and in vacuum);
 //  u_stage 1, one SOR half-sweep (dispatched over half the x range): the cells with
 //    (i + j + k) % 2 == u_colour relax
 //    phi <- (1 - w) phi + w (q + sum_f K_f phi_f) / (sigma_a + sum_f K_f + leaks), with the
@@ -17,6 +18,9 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(rgba32f, binding = 0) uniform image3D u_phi;    // rgb: phi, a: D (0: vacuum)
 layout(rgba32f, binding = 1) uniform image3D u_source; // rgb: q, a: sigma_a
+layout(rgba32f, binding = 2) uniform readonly image3D u_coarser; // the coarser level's phi
+uniform int u_hasCoarser;            // 0: the coarsest level (phi starts at 0)
+uniform ivec3 u_coarserDimensions;
 uniform int u_stage;
 uniform int u_colour;
 uniform ivec3 u_dimensions;      // diffusion grid
@@ -45,6 +49,22 @@ float Diffusivity(float sigma)
   return reduced >= u_vacuum ? 1.0 / (3.0 * max(reduced, 1.0 / u_transportLimit)) : 0.0;
 }
 
+// The coarser level's phi, trilinear at the fraction f of the common box (ResampleTrilinear of
+// the CPU code, with the index clamped into the lattice).
+vec3 Coarser(vec3 f)
+{
+  ivec3 last = max(u_coarserDimensions - 1, ivec3(0));
+  vec3 p = clamp(f * vec3(last), vec3(0.0), vec3(last));
+  ivec3 i0 = min(ivec3(floor(p)), max(last - 1, ivec3(0)));
+  vec3 t = p - vec3(i0);
+  ivec3 i1 = min(i0 + 1, last);
+  vec3 c00 = mix(imageLoad(u_coarser, i0).rgb, imageLoad(u_coarser, ivec3(i1.x, i0.y, i0.z)).rgb, t.x);
+  vec3 c10 = mix(imageLoad(u_coarser, ivec3(i0.x, i1.y, i0.z)).rgb, imageLoad(u_coarser, ivec3(i1.x, i1.y, i0.z)).rgb, t.x);
+  vec3 c01 = mix(imageLoad(u_coarser, ivec3(i0.x, i0.y, i1.z)).rgb, imageLoad(u_coarser, ivec3(i1.x, i0.y, i1.z)).rgb, t.x);
+  vec3 c11 = mix(imageLoad(u_coarser, ivec3(i0.x, i1.y, i1.z)).rgb, imageLoad(u_coarser, i1).rgb, t.x);
+  return mix(mix(c00, c10, t.y), mix(c01, c11, t.y), t.z);
+}
+
 void Source(ivec3 cell)
 {
   vec3 f = vec3(cell) / max(vec3(u_dimensions - 1), vec3(1.0));
@@ -65,7 +85,9 @@ void Source(ivec3 cell)
     AVS_FOR_EACH_LIGHT(AVS_ADD_SOURCE)
   }
   imageStore(u_source, cell, vec4(sigma * e, (1.0 - u_albedo) * max(sigma, 0.0)));
-  imageStore(u_phi, cell, vec4(0.0, 0.0, 0.0, Diffusivity(sigma)));
+  float d = Diffusivity(sigma);
+  vec3 start = u_hasCoarser != 0 && d > 0.0 ? Coarser(f) : vec3(0.0);
+  imageStore(u_phi, cell, vec4(start, d));
 }
 
 void Relax(ivec3 cell)
