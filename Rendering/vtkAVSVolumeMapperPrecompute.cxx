@@ -275,18 +275,19 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
       volumes.push_back(state.Volume);
     }
     vtkAVSDiffuseVolume& diffuse = in.RayCaster.GetDiffuseVolume();
-    const bool done = gpu
-      ? diffuse.Compute(in.RayCaster.GetWindow(),
-          avs::DiffusionGeometry(lightGrid, rp.DiffusionVolumeMaximumDimension),
-          lightGrid.Dimensions,
-          in.RayCaster.GetAveragedExtinctionTexture(),
-          in.RayCaster.GetLightVolumeTexture(0),
-          in.RayCaster.GetLightVolumeTexture(1),
-          lights,
-          rp,
-          error)
-      : diffuse.Upload(
-          in.RayCaster.GetWindow(), avs::ComputeDiffuse(in.Averaged, lights, volumes, rp), error);
+    const bool done = gpu ? diffuse.Compute(in.RayCaster.GetWindow(),
+                              avs::DiffusionGeometry(lightGrid, rp.DiffusionVolumeMaximumDimension),
+                              lightGrid.Dimensions,
+                              in.RayCaster.GetAveragedExtinctionTexture(),
+                              in.RayCaster.GetLightVolumeTexture(0),
+                              in.RayCaster.GetLightVolumeTexture(1),
+                              lights,
+                              rp,
+                              error)
+                          : diffuse.Upload(in.RayCaster.GetWindow(),
+                              avs::ComputeDiffuse(in.Averaged, lights, volumes, rp),
+                              in.Averaged,
+                              error);
     if (!done)
     {
       vtkErrorMacro("Cannot render: " << error);

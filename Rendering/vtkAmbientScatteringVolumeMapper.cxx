@@ -28,6 +28,7 @@ void vtkAmbientScatteringVolumeMapper::FillParameters(avs::ScatteringParameters&
   p.EmissionWeight = this->EmissionWeight;
   p.LightScale = this->LightScale;
   p.LightVolumeMaximumDimension = this->LightVolumeMaximumDimension;
+  p.DiffusionVolumeMaximumDimension = this->DiffusionVolumeMaximumDimension;
   p.Model = this->ScatteringModel == ExtendedModel ? avs::ScatteringModel::Extended
                                                    : avs::ScatteringModel::Paper;
 }
@@ -59,6 +60,8 @@ void vtkAmbientScatteringVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LightScale: " << this->LightScale << "\n";
   os << indent << "LightVolumeMaximumDimension: " << this->LightVolumeMaximumDimension << "\n";
   os << indent << "ScatteringModel: " << this->GetScatteringModelAsString() << "\n";
+  os << indent << "DiffusionVolumeMaximumDimension: " << this->DiffusionVolumeMaximumDimension
+     << "\n";
   os << indent << "ScatteringTableFileName: "
      << (this->ScatteringTableFileName ? this->ScatteringTableFileName : "(the shipped table)")
      << "\n";

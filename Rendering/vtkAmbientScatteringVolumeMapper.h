@@ -91,12 +91,25 @@ public:
 
   ///@{
   /**
+   * Largest dimension per axis of the extended model's diffusion grid (the light grid, capped,
+   * keeping the aspect ratio; ARCHITECTURE.md, "Beyond the paper"). Default 64: the diffuse
+   * fluence varies on the scale of the transport mean free path, and the solve's cost grows with
+   * the cube of this. The rays read the fluence interpolated onto the light grid. Only the
+   * extended model uses it.
+   */
+  vtkSetClampMacro(DiffusionVolumeMaximumDimension, int, 2, 1024);
+  vtkGetMacro(DiffusionVolumeMaximumDimension, int);
+  ///@}
+
+  ///@{
+  /**
    * The model of ambient scattering. PaperModel (0, the default): Ament et al. 2013 as this
    * project implements it (ALGORITHM.md sections 3-6). ExtendedModel (1): the paper's model plus
    * long-range multiple scattering, the diffuse fluence of a diffusion solve on a coarse grid
    * sourced by the light the tubes deliver (ARCHITECTURE.md, "Beyond the paper"); brighter and
    * closer to the truth in thick clouds lit from the side, the same in optically thin media.
-   * It costs one more texture fetch per sample and the solve at each light-volume rebuild.
+   * Its fluence comes with the averaged extinction in one texture fetch per sample (in place of
+   * the averaged extinction's own), and it costs the solve at each light-volume rebuild.
    */
   enum
   {
@@ -134,6 +147,7 @@ protected:
   double EmissionWeight = 0.0;
   double LightScale = 1.0;
   int LightVolumeMaximumDimension = 128;
+  int DiffusionVolumeMaximumDimension = 64;
   char* ScatteringTableFileName = nullptr;
   int ScatteringModel = PaperModel;
   vtkAmbientScatteringTable* Table;

@@ -299,6 +299,7 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
   parameters.SampleDistance = this->SampleDistance;
   parameters.TerminationTransmittance = this->TerminationTransmittance;
   parameters.LightVolumeMaximumDimension = this->LightVolumeMaximumDimension;
+  parameters.DiffusionVolumeMaximumDimension = this->DiffusionVolumeMaximumDimension;
   parameters.OcclusionVolumeMaximumDimension = this->OcclusionVolumeMaximumDimension;
   parameters.Model = this->ScatteringModel == ExtendedModel ? avs::ScatteringModel::Extended
                                                             : avs::ScatteringModel::Paper;
@@ -423,6 +424,8 @@ void vtkVolumeReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
      << (this->SampleDistance > 0 ? "" : " (automatic)") << "\n";
   os << indent << "TerminationTransmittance: " << this->TerminationTransmittance << "\n";
   os << indent << "LightVolumeMaximumDimension: " << this->LightVolumeMaximumDimension << "\n";
+  os << indent << "DiffusionVolumeMaximumDimension: " << this->DiffusionVolumeMaximumDimension
+     << "\n";
   os << indent << "OcclusionVolumeMaximumDimension: " << this->OcclusionVolumeMaximumDimension
      << "\n";
   os << indent

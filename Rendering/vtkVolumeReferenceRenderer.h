@@ -178,7 +178,8 @@ public:
    * long-range multiple scattering, the diffuse fluence of a diffusion solve on a coarse grid
    * sourced by the light the tubes deliver (ARCHITECTURE.md, "Beyond the paper"); brighter and
    * closer to the truth in thick clouds lit from the side, the same in optically thin media.
-   * It costs one more texture fetch per sample and the solve at each light-volume rebuild.
+   * Its fluence comes with the averaged extinction in one texture fetch per sample (in place of
+   * the averaged extinction's own), and it costs the solve at each light-volume rebuild.
    */
   enum
   {
@@ -287,6 +288,15 @@ public:
 
   ///@{
   /**
+   * Largest dimension per axis of the extended model's diffusion grid (the light grid, capped).
+   * Default 64, as on vtkAmbientScatteringVolumeMapper.
+   */
+  vtkSetClampMacro(DiffusionVolumeMaximumDimension, int, 2, 1024);
+  vtkGetMacro(DiffusionVolumeMaximumDimension, int);
+  ///@}
+
+  ///@{
+  /**
    * Largest occlusion-volume dimension per axis (the data's dimensions, capped). Default 128.
    */
   vtkSetClampMacro(OcclusionVolumeMaximumDimension, int, 2, 4096);
@@ -378,6 +388,7 @@ protected:
   double SampleDistance = 0.0;
   double TerminationTransmittance = 1.0 / 255.0;
   int LightVolumeMaximumDimension = 128;
+  int DiffusionVolumeMaximumDimension = 64;
   int OcclusionVolumeMaximumDimension = 128;
   int SamplesPerPixel = 64;
   int Seed = 1;

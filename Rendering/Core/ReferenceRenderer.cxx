@@ -71,9 +71,13 @@ std::vector<Grid> ComputeDiffuse(const Grid& averaged,
   settings.AmbientRadius = p.AmbientRadius;
   const GridGeometry target =
     DiffusionGeometry(averaged.Geometry, p.DiffusionVolumeMaximumDimension);
-  std::array<Grid, 3> phi =
+  const std::array<Grid, 3> phi =
     ComputeDiffusion(averaged, lights, lightVolumes, target, settings, residual);
-  return { std::move(phi[0]), std::move(phi[1]), std::move(phi[2]) };
+  // Onto the light grid, where the rays read it with the averaged extinction (the GPU packs
+  // both into one texture).
+  return { ResampleTrilinear(phi[0], averaged.Geometry),
+    ResampleTrilinear(phi[1], averaged.Geometry),
+    ResampleTrilinear(phi[2], averaged.Geometry) };
 }
 
 bool Precompute(const VolumeScene& scene,

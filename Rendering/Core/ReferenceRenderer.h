@@ -74,7 +74,8 @@ struct PrecomputedVolumes
 Grid ExtinctionGrid(const VolumeScene& scene);
 
 /// The extended model's diffuse fluence (DiffuseFluence.h, three grids: RGB) from the averaged
-/// extinction and the light volumes on the light grid.
+/// extinction and the light volumes on the light grid: solved on the diffusion grid
+/// (ComputeDiffusion) and interpolated onto the light grid, where the rays read it.
 std::vector<Grid> ComputeDiffuse(const Grid& averaged,
   const std::vector<Light>& lights,
   const std::vector<Grid>& lightVolumes,

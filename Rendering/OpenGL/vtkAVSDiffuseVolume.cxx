@@ -21,16 +21,20 @@ vtkAVSDiffuseVolume::~vtkAVSDiffuseVolume() = default;
 
 bool vtkAVSDiffuseVolume::Upload(vtkOpenGLRenderWindow* window,
   const std::vector<avs::Grid>& phi,
+  const avs::Grid& averaged,
   std::string& error)
 {
-  if (phi.size() != 3 || phi[0].Values.size() != phi[0].Geometry.NumberOfPoints() ||
-    phi[1].Values.size() != phi[0].Values.size() || phi[2].Values.size() != phi[0].Values.size())
+  const std::size_t n = averaged.Values.size();
+  if (phi.size() != 3 || n != averaged.Geometry.NumberOfPoints() ||
+    std::any_of(phi.begin(),
+      phi.end(),
+      [&](const avs::Grid& g)
+      { return g.Values.size() != n || g.Geometry.Dimensions != averaged.Geometry.Dimensions; }))
   {
-    error = "the diffuse fluence is not three grids of one size";
+    error = "the diffuse fluence is not three grids on the light grid";
     return false;
   }
-  const std::array<int, 3> d = phi[0].Geometry.Dimensions;
-  const std::size_t n = phi[0].Values.size();
+  const std::array<int, 3> d = averaged.Geometry.Dimensions;
   std::vector<float> packed(4 * n, 0.0f);
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -38,6 +42,7 @@ bool vtkAVSDiffuseVolume::Upload(vtkOpenGLRenderWindow* window,
     {
       packed[4 * i + c] = phi[c].Values[i];
     }
+    packed[4 * i + 3] = averaged.Values[i];
   }
   if (!this->Allocate(window, this->Texture, d, packed.data(), error))
   {
@@ -111,7 +116,7 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   this->Coarser.resize(2 * (levels.size() - 1));
   for (std::size_t l = 0; l < levels.size(); ++l)
   {
-    vtkSmartPointer<vtkTextureObject>& phi = l == 0 ? this->Texture : this->Coarser[2 * l - 2];
+    vtkSmartPointer<vtkTextureObject>& phi = l == 0 ? this->Fluence : this->Coarser[2 * l - 2];
     vtkSmartPointer<vtkTextureObject>& q = l == 0 ? this->Source : this->Coarser[2 * l - 1];
     if (!this->Allocate(window, phi, levels[l].Dimensions, nullptr, error) ||
       !this->Allocate(window, q, levels[l].Dimensions, nullptr, error))
@@ -119,8 +124,11 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
       return false;
     }
   }
-  const std::array<int, 3> d = grid.Dimensions;
-  this->Dimensions = d;
+  if (!this->Allocate(window, this->Texture, lightDimensions, nullptr, error))
+  {
+    return false;
+  }
+  this->Dimensions = lightDimensions;
 
   const GLuint program = this->Program;
   vtkAVSRenderPasses::DiscardErrors();
@@ -183,7 +191,7 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   {
     const avs::GridGeometry& level = levels[l];
     const std::array<int, 3>& n = level.Dimensions;
-    vtkTextureObject* phi = l == 0 ? this->Texture : this->Coarser[2 * l - 2];
+    vtkTextureObject* phi = l == 0 ? this->Fluence : this->Coarser[2 * l - 2];
     vtkTextureObject* q = l == 0 ? this->Source : this->Coarser[2 * l - 1];
     vtkTextureObject* coarser = l + 1 < levels.size() ? this->Coarser[2 * l].Get() : phi;
     glUniform3i(location("u_dimensions"), n[0], n[1], n[2]);
@@ -220,10 +228,24 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
       }
     }
   }
+  // phi onto the light grid, with the averaged extinction, for the ray caster's one fetch.
+  {
+    const std::array<int, 3>& n = lightDimensions;
+    const std::array<int, 3>& m = grid.Dimensions;
+    glUniform1i(location("u_stage"), 2);
+    glUniform3i(location("u_dimensions"), n[0], n[1], n[2]);
+    glUniform3i(location("u_coarserDimensions"), m[0], m[1], m[2]);
+    glBindImageTexture(2, this->Fluence->GetHandle(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(3, this->Texture->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute(static_cast<GLuint>((n[0] + 7) / 8),
+      static_cast<GLuint>((n[1] + 7) / 8),
+      static_cast<GLuint>(n[2]));
+  }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
   glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
   glBindImageTexture(2, 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+  glBindImageTexture(3, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   glUseProgram(0);
   averaged->Deactivate();
   first->Deactivate();
@@ -247,10 +269,6 @@ void vtkAVSDiffuseVolume::Bind(vtkShaderProgram* program)
   }
   this->Texture->Activate();
   program->SetUniformi("u_diffuse", this->Texture->GetTextureUnit());
-  const float d[3] = { static_cast<float>(this->Dimensions[0]),
-    static_cast<float>(this->Dimensions[1]),
-    static_cast<float>(this->Dimensions[2]) };
-  program->SetUniform3f("u_diffuseDimensions", d);
 }
 
 void vtkAVSDiffuseVolume::Unbind()
@@ -264,6 +282,7 @@ void vtkAVSDiffuseVolume::Unbind()
 void vtkAVSDiffuseVolume::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Coarser.push_back(this->Texture);
+  this->Coarser.push_back(this->Fluence);
   this->Coarser.push_back(this->Source);
   for (vtkSmartPointer<vtkTextureObject>& t : this->Coarser)
   {
@@ -274,6 +293,7 @@ void vtkAVSDiffuseVolume::ReleaseGraphicsResources(vtkWindow* window)
   }
   this->Coarser.clear();
   this->Texture = nullptr;
+  this->Fluence = nullptr;
   this->Source = nullptr;
   // Without a window its context took the program with it: the name is only forgotten.
   vtkAVSShaderAssembly::ReleaseComputeProgram(this->Program, window != nullptr);

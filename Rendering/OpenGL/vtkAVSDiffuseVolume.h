@@ -2,10 +2,11 @@
  * @class   vtkAVSDiffuseVolume
  * @brief   the extended model's diffuse fluence on the GPU (private)
  *
- * Holds the RGB fluence phi of the extended model (Core/DiffuseFluence.h) as a 3D texture on
- * the diffusion grid, uploaded from the core's CPU solve or computed on the GPU by the same
- * solve (avs_diffusion_cs.glsl, OpenGL 4.3), and binds it for the ray-casting program
- * (avs_as_effect.glsl, AVS_DIFFUSE: u_diffuse, u_diffuseDimensions). Kept apart from
+ * Holds the RGB fluence phi of the extended model (Core/DiffuseFluence.h), interpolated onto
+ * the light grid and packed with the averaged extinction as one RGBA texture (phi, sigma~t):
+ * uploaded from the core's CPU solve or computed on the GPU by the same solve
+ * (avs_diffusion_cs.glsl, OpenGL 4.3), and bound for the ray-casting program
+ * (avs_as_effect.glsl, AVS_DIFFUSE: u_diffuse), which reads both with one fetch. Kept apart from
  * vtkAVSRayCaster, which only owns one and calls Bind / Unbind / ReleaseGraphicsResources.
  */
 #ifndef vtkAVSDiffuseVolume_h
@@ -34,14 +35,19 @@ public:
   vtkAVSDiffuseVolume(const vtkAVSDiffuseVolume&) = delete;
   vtkAVSDiffuseVolume& operator=(const vtkAVSDiffuseVolume&) = delete;
 
-  /// Uploads phi (three grids on one geometry: R, G, B) into the texture of `window`'s context.
-  bool Upload(vtkOpenGLRenderWindow* window, const std::vector<avs::Grid>& phi, std::string& error);
+  /// Uploads phi (three grids on the light grid: R, G, B, avs::ComputeDiffuse) with the
+  /// averaged extinction on the same grid into the texture of `window`'s context.
+  bool Upload(vtkOpenGLRenderWindow* window,
+    const std::vector<avs::Grid>& phi,
+    const avs::Grid& averaged,
+    std::string& error);
   /// The same solve on the GPU (the caller checked for compute shaders): the source from the
   /// averaged extinction and the packed light volumes on the light grid (textures of the ray
   /// caster; `lights1` may be null for up to four lights), then the red-black SOR
   /// sweeps of the nested solve (avs::ComputeDiffusion: `resolved.DiffusionCoarseIterations` per
   /// coarser level, `resolved.DiffusionIterations` on the finest), into the
-  /// texture on `grid` (DiffusionGeometry). `lights` are in the data's frame, as for the light
+  /// fluence on `grid` (DiffusionGeometry), then phi interpolated onto the light grid with the
+  /// averaged extinction into the texture. `lights` are in the data's frame, as for the light
   /// volumes.
   bool Compute(vtkOpenGLRenderWindow* window,
     const avs::GridGeometry& grid,
@@ -67,13 +73,14 @@ private:
     const std::array<int, 3>& d,
     const float* data,
     std::string& error);
-  vtkSmartPointer<vtkTextureObject> Texture;
-  vtkSmartPointer<vtkTextureObject> Source; ///< the GPU solve's q
+  vtkSmartPointer<vtkTextureObject> Texture; ///< (phi, sigma~t) on the light grid
+  vtkSmartPointer<vtkTextureObject> Fluence; ///< the GPU solve's phi on the diffusion grid
+  vtkSmartPointer<vtkTextureObject> Source;  ///< the GPU solve's q
   /// The nested solve's coarser levels (DiffusionLevels 1, 2, ...): phi and q of each.
   std::vector<vtkSmartPointer<vtkTextureObject>> Coarser;
   unsigned int Program = 0; ///< the GPU solve's program, for ProgramDefines
   std::string ProgramDefines;
-  std::array<int, 3> Dimensions{ 0, 0, 0 };
+  std::array<int, 3> Dimensions{ 0, 0, 0 }; ///< the texture's (the light grid)
 };
 
 #endif

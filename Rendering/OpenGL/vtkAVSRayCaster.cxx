@@ -305,11 +305,14 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   }
   const bool blend = frame.Mode == avs::RenderMode::EmissionAbsorption;
   // Ambient scattering reads the averaged extinction from the light textures where PackAveraged
-  // left a copy in the channel after the last light's.
+  // left a copy in the channel after the last light's; the extended model from the diffuse
+  // fluence's texture.
   const int lightCount =
     static_cast<int>(std::min<std::size_t>(frame.Lights.size(), MaximumNumberOfLights));
+  const bool extended = frame.Mode == avs::RenderMode::AmbientScattering &&
+    frame.Parameters.Model == avs::ScatteringModel::Extended;
   const bool packed =
-    frame.Mode == avs::RenderMode::AmbientScattering && tx.HasAveragedIn(lightCount);
+    frame.Mode == avs::RenderMode::AmbientScattering && !extended && tx.HasAveragedIn(lightCount);
   if (!this->EnsureProgram(frame.Mode,
         vtkAVSShaderAssembly::RayCastDefines(frame.Mode,
           frame.Parameters,
@@ -423,7 +426,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
       error = "the scattering volumes are not uploaded";
       return false;
     }
-    if (!packed)
+    if (!packed && !extended)
     {
       tx.AveragedExtinction->Activate();
       program->SetUniformi("u_averagedExtinction", tx.AveragedExtinction->GetTextureUnit());
@@ -452,7 +455,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     program->SetUniform2f("u_tableSize", tx.TableSize);
     program->SetUniformf("u_tableTauMaximum", tx.TableTauMaximum);
     // The extended model (vtkAVSDiffuseVolume).
-    if (frame.Parameters.Model == avs::ScatteringModel::Extended)
+    if (extended)
     {
       if (!this->Diffuse.IsReady())
       {

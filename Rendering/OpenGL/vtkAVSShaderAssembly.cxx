@@ -80,8 +80,10 @@ std::string vtkAVSShaderAssembly::RayCastDefines(avs::RenderMode mode,
   defines += ring > vtkAVSRayCaster::MaximumRingSize
     ? "#define AVS_LOOKAHEAD_EXPLICIT\n"
     : "#define AVS_RING " + std::to_string(ring) + "\n";
-  // The extended model: one more fetch per sample, of the diffuse fluence (vtkAVSDiffuseVolume).
-  if (p.Model == avs::ScatteringModel::Extended)
+  // The extended model: the diffuse fluence with the averaged extinction in one fetch
+  // (vtkAVSDiffuseVolume), in place of the averaged extinction's.
+  const bool extended = p.Model == avs::ScatteringModel::Extended;
+  if (extended)
   {
     defines += "#define AVS_DIFFUSE\n";
   }
@@ -90,7 +92,7 @@ std::string vtkAVSShaderAssembly::RayCastDefines(avs::RenderMode mode,
   defines += "#define AVS_LIGHT_TEXTURES " +
     std::to_string(vtkAVSVolumeTextures::LightTexturesFor(n)) + "\n";
   // The averaged extinction in the free channel after the last light's, read with them.
-  if (averagedSlot >= 0 &&
+  if (averagedSlot >= 0 && !extended &&
     vtkAVSVolumeTextures::LightTexturesFor(averagedSlot + 1) ==
       vtkAVSVolumeTextures::LightTexturesFor(n))
   {

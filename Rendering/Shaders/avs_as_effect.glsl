@@ -21,9 +21,16 @@
 // The averaged sigma_t on the light grid (where the precomputation leaves it), read at the
 // sample with the light volumes' coordinate (ARCHITECTURE.md, "Texel formats"): with 1-3 or 5-7
 // lights from the copy in the free channel after the last light's, AVS_AVERAGED_SLOT (slot s:
-// channel s % 4 of light texture s / 4), in the same fetch as the lights; else from its own
-// texture, one fetch more.
-#ifndef AVS_AVERAGED_SLOT
+// channel s % 4 of light texture s / 4), in the same fetch as the lights; in the extended model
+// from the alpha of the diffuse fluence's texture (below), in the same fetch as phi; else from
+// its own texture, one fetch more.
+#ifdef AVS_DIFFUSE
+// The extended model (ARCHITECTURE.md, "Beyond the paper"): the diffuse fluence phi (RGB) of
+// the diffusion solve (Core/DiffuseFluence.h), interpolated onto the light grid, with the
+// averaged sigma_t in alpha; the ring's samples keep the phi their InScattered read.
+uniform sampler3D u_diffuse;
+vec3 g_phi;
+#elif !defined(AVS_AVERAGED_SLOT)
 uniform sampler3D u_averagedExtinction;
 #endif
 // Light grid: tube transmittance of lights 0-3, then 4-7.
@@ -44,13 +51,6 @@ uniform float u_tableTauMaximum;
 uniform float u_albedo;
 uniform float u_ambientRadius;
 uniform float u_emissionWeight;
-#ifdef AVS_DIFFUSE
-// The extended model (ARCHITECTURE.md, "Beyond the paper"): the diffuse fluence phi (RGB) on
-// the diffusion grid, from the diffusion solve (Core/DiffuseFluence.h).
-uniform sampler3D u_diffuse;
-uniform vec3 u_diffuseDimensions;
-vec3 g_diffuseScale, g_diffuseOffset;
-#endif
 
 int g_lag;           // k = floor(r / dt)
 float g_lagFraction; // f = r / dt - k
@@ -163,7 +163,11 @@ vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified)
 #else
   vec4 tubes1 = vec4(1.0);
 #endif
-#ifdef AVS_AVERAGED_SLOT
+#if defined(AVS_DIFFUSE)
+  vec4 diffuse = textureLod(u_diffuse, lc, 0.0);
+  float averaged = diffuse.a;
+  g_phi = diffuse.rgb;
+#elif defined(AVS_AVERAGED_SLOT)
   float averaged = AVS_AVERAGED_SLOT < 4 ? tubes0[AVS_AVERAGED_SLOT & 3] : tubes1[AVS_AVERAGED_SLOT & 3];
 #else
   float averaged = textureLod(u_averagedExtinction, lc, 0.0).r;
@@ -195,10 +199,6 @@ bool EffectContinues(float T, int i)
   g_tableScale = (u_tableSize - 1.0) / u_tableSize;
   g_tableOffset = 0.5 / u_tableSize;
   g_tauScale = 1.0 / log(1.0 + u_tableTauMaximum);
-#ifdef AVS_DIFFUSE
-  g_diffuseScale = (u_diffuseDimensions - 1.0) / ((u_wholeDimensions - 1.0) * u_diffuseDimensions);
-  g_diffuseOffset = u_pieceOffset * g_diffuseScale + 0.5 / u_diffuseDimensions;
-#endif
 #define AVS_THETA_COORDINATE(j) g_thetaCoordinate[j] = ThetaCoordinate(dot(u_lightAxis[j], -direction));
   AVS_FOR_EACH_LIGHT(AVS_THETA_COORDINATE)
 #ifdef AVS_TABLE_COLUMN
@@ -231,12 +231,13 @@ bool EffectContinues(float T, int i)
   }
 #endif
 //AVS::Effect::Sample
-#ifdef AVS_DIFFUSE
+#if defined(AVS_DIFFUSE) && defined(AVS_LOOKAHEAD_EXPLICIT)
     // The extended model's diffuse light at the sample itself: albedo c phi / (4 pi) per unit
-    // optical depth, integrated exactly over the step (T (1 - exp(-sigma_t dt))).
+    // optical depth, integrated exactly over the step (T (1 - exp(-sigma_t dt))). (With the
+    // ring, below, from the fetch of the sample's own InScattered.)
     if (here.a > 0.0 && T >= u_termination)
     {
-      vec3 phi = textureLod(u_diffuse, index * g_diffuseScale + g_diffuseOffset, 0.0).rgb;
+      vec3 phi = textureLod(u_diffuse, index * g_lightScale + g_lightOffset, 0.0).rgb;
       L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * here.rgb * phi;
     }
 #endif
@@ -258,6 +259,14 @@ bool EffectContinues(float T, int i)
       float lagged = mix(newer, older, g_lagFraction);
       L += lagged * dt *
         InScattered(index, origin + t * direction, direction, here);
+#ifdef AVS_DIFFUSE
+      // The extended model's diffuse light at the sample itself (T <= older: every sample
+      // that adds it passed the test above), phi from the InScattered just now.
+      if (T >= u_termination)
+      {
+        L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * here.rgb * g_phi;
+      }
+#endif
     }
 #else
     if (i == 0)

@@ -11,7 +11,9 @@
 //  u_stage 1, one SOR half-sweep (dispatched over half the x range): the cells with
 //    (i + j + k) % 2 == u_colour relax
 //    phi <- (1 - w) phi + w (q + sum_f K_f phi_f) / (sigma_a + sum_f K_f + leaks), with the
-//    harmonic-mean couplings of the CPU code and Marshak's leak towards vacuum and the border.
+//    harmonic-mean couplings of the CPU code and Marshak's leak towards vacuum and the border;
+//  u_stage 2, after the finest level: phi interpolated onto the light grid, with the averaged
+//    extinction in alpha, into u_packed (what the ray caster reads).
 // The ray caster defines AVS_NUMBER_OF_LIGHTS, AVS_POSITIONAL_LIGHTS and AVS_SPOT_LIGHTS, and
 // puts avs_lights.glsl (LightAt) before this text.
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
@@ -19,6 +21,7 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(rgba32f, binding = 0) uniform image3D u_phi;    // rgb: phi, a: D (0: vacuum)
 layout(rgba32f, binding = 1) uniform image3D u_source; // rgb: q, a: sigma_a
 layout(rgba32f, binding = 2) uniform readonly image3D u_coarser; // the coarser level's phi
+layout(rgba32f, binding = 3) uniform writeonly image3D u_packed; // stage 2: (phi, sigma~t)
 uniform int u_hasCoarser;            // 0: the coarsest level (phi starts at 0)
 uniform ivec3 u_coarserDimensions;
 uniform int u_stage;
@@ -125,10 +128,18 @@ void Relax(ivec3 cell)
   imageStore(u_phi, cell, vec4(phi, here.a));
 }
 
+// Stage 2: phi of the finest level (bound as u_coarser) at a point of the light grid (u_dimensions),
+// with the averaged extinction there, for the ray caster's one fetch of both.
+void Pack(ivec3 cell)
+{
+  vec3 f = vec3(cell) / max(vec3(u_dimensions - 1), vec3(1.0));
+  imageStore(u_packed, cell, vec4(Coarser(f), texelFetch(u_averaged, cell, 0).r));
+}
+
 void main()
 {
   ivec3 cell = ivec3(gl_GlobalInvocationID);
-  if (u_stage != 0)
+  if (u_stage == 1)
   {
     // A half-sweep is dispatched over half the x range: invocation x relaxes the cell 2x or
     // 2x + 1 of this row whose colour is u_colour, so no invocation idles beside a busy one.
@@ -142,8 +153,12 @@ void main()
   {
     Source(cell);
   }
-  else
+  else if (u_stage == 1)
   {
     Relax(cell);
+  }
+  else
+  {
+    Pack(cell);
   }
 }

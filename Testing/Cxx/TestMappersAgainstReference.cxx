@@ -1,7 +1,8 @@
 // Each GPU mapper's picture against the CPU reference ray caster on the same scene: same
 // volume, transfer functions, lights, camera and sample distance, jittering off; in perspective
 // from outside, from inside the volume (with a spot light and a headlight added) and in parallel
-// projection (with light volumes coarser than the data); and a fourth view with five lights (two
+// projection (with light volumes coarser than the data, and the diffusion grid coarser still);
+// and a fourth view with five lights (two
 // light-volume textures), AO with direct light, emission in AO and ambient scattering, and an
 // ambient radius too large for the ring buffer (the explicit look-ahead). Ambient scattering in
 // both models: the paper's and the extended one (its diffusion solve on the CPU, its extra
@@ -120,6 +121,9 @@ int main(int argc, char* argv[])
         // Parallel view: light volumes, averaged extinction and occlusion on grids coarser than
         // the data.
         s->SetLightVolumeMaximumDimension(view == 2 ? 24 : 256);
+        // ... and the extended model's diffusion grid coarser than the light grid (its fluence
+        // interpolated onto the light grid).
+        s->SetDiffusionVolumeMaximumDimension(view == 2 ? 12 : 64);
         s->SetEmissionWeight(emission);
       }
       ao->SetOcclusionVolumeMaximumDimension(view == 2 ? 20 : 256);
@@ -158,6 +162,7 @@ int main(int argc, char* argv[])
       reference->SetOcclusionRadius(0.15);
       reference->SetAmbientRadius(radius);
       reference->SetLightVolumeMaximumDimension(view == 2 ? 24 : 256);
+      reference->SetDiffusionVolumeMaximumDimension(view == 2 ? 12 : 64);
       reference->SetOcclusionVolumeMaximumDimension(view == 2 ? 20 : 256);
       // The AO mapper's direct light scatters with albedo 1 and g = 0.
       reference->SetAnisotropy(m == 1 ? 0.0 : 0.4);

@@ -45,6 +45,10 @@ def main():
         check("ScatteringModel: Extended" in str(m), "PrintSelf lacks the model")
         m.SetScatteringModel(7)
         check(m.GetScatteringModel() == cls.ExtendedModel, "the model is not clamped")
+        check(m.GetDiffusionVolumeMaximumDimension() == 64, "the diffusion grid's default")
+        m.SetDiffusionVolumeMaximumDimension(1)
+        check(m.GetDiffusionVolumeMaximumDimension() == 2, "the diffusion grid is not clamped")
+        check("DiffusionVolumeMaximumDimension: 2" in str(m), "PrintSelf lacks the diffusion grid")
 
     if failures:
         print("FAILED:", *failures, sep="\n  ")
