@@ -20,6 +20,15 @@ double DiffusionSourceWeight(TubeLaw law, double albedo, double anisotropy)
   return law == TubeLaw::DirectBeam ? albedo : albedo * (1.0 - anisotropy);
 }
 
+double BeyondTheBall(double sigma, const DiffusionSettings& s)
+{
+  const double reduced = (1.0 - s.Albedo * s.Anisotropy) * std::max(0.0, sigma);
+  const double absorbing = (1.0 - s.Albedo) * std::max(0.0, sigma);
+  const double limited = std::max(reduced, 1.0 / std::max(1e-30, s.TransportLengthLimit));
+  const double x = std::sqrt(3.0 * absorbing * limited) * std::max(0.0, s.AmbientRadius);
+  return (1.0 + x) * std::exp(-x);
+}
+
 std::array<Grid, 3> DiffusionSource(const Grid& averaged,
   const std::vector<Light>& lights,
   const std::vector<Grid>& lightVolumes,
@@ -48,11 +57,12 @@ std::array<Grid, 3> DiffusionSource(const Grid& averaged,
             Vec3 e{ 0, 0, 0 };
             if (sigma > 0.0)
             {
+              const double beyond = BeyondTheBall(sigma, settings);
               for (std::size_t l = 0; l < lights.size() && l < lightVolumes.size(); ++l)
               {
                 e = e +
                   lights[l].FreeIrradiance(world) *
-                    (weights[l] * std::exp(-toCentre[l] * sigma) *
+                    (beyond * weights[l] * std::exp(-toCentre[l] * sigma) *
                       lightVolumes[l].SampleWorld(world));
               }
             }

@@ -55,6 +55,13 @@ constexpr double TransportLengthLimitInRadii = 16.0;
 /// entry is taken on to x by exp(-r sigma~t), DiffusionSettings::AmbientRadius).
 double DiffusionSourceWeight(TubeLaw law, double albedo, double anisotropy);
 
+/// The share of the light diffusing from a point source that lies beyond the ambient ball
+/// around it, (1 + kappa r) exp(-kappa r) with kappa = sqrt(sigma_a / D) (the infinite
+/// homogeneous medium's Green function; D flux-limited as in the solve): the ball term (the
+/// table A) already counts the light's scattering inside the ball, so the source q is weighted by
+/// this, which is 1 in thin or conservative media and at r -> 0.
+double BeyondTheBall(double sigma, const DiffusionSettings& settings);
+
 /// The diffusion grid: the light grid (or any grid over the data's lattice box) capped at
 /// `maximum` points per axis.
 GridGeometry DiffusionGeometry(const GridGeometry& data, int maximum);

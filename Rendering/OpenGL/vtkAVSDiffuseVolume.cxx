@@ -171,6 +171,7 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
     static_cast<float>(lightDimensions[2]));
   glUniform1f(location("u_albedo"), static_cast<float>(p.Albedo));
   glUniform1f(location("u_anisotropy"), static_cast<float>(p.Anisotropy));
+  glUniform1f(location("u_ambientRadius"), static_cast<float>(p.AmbientRadius));
   glUniform1f(location("u_relaxation"), static_cast<float>(avs::DiffusionSettings().Relaxation));
   glUniform1f(location("u_transportLimit"),
     static_cast<float>(avs::TransportLengthLimitInRadii * p.AmbientRadius));

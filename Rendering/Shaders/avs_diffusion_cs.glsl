@@ -37,6 +37,7 @@ uniform float u_anisotropy;
 uniform float u_sourceWeight[8]; // DiffusionSourceWeight of each light's tube law
 uniform float u_toCentre[8];     // r for direct-beam tubes (T at the ball's entry, on to x), else 0
 uniform float u_relaxation;
+uniform float u_ambientRadius;   // r
 uniform float u_transportLimit;  // 1 / sigma' at most
 uniform float u_vacuum;          // VacuumOpticalDepth / mean spacing
 
@@ -83,8 +84,12 @@ void Source(ivec3 cell)
 #else
     vec4 tubes1 = vec4(1.0);
 #endif
+    // BeyondTheBall: the light's share beyond the ball, which the table A does not count.
+    float reduced = (1.0 - u_albedo * u_anisotropy) * sigma;
+    float kr = sqrt(3.0 * (1.0 - u_albedo) * sigma * max(reduced, 1.0 / u_transportLimit)) * u_ambientRadius;
+    float beyond = (1.0 + kr) * exp(-kr);
     vec3 propagation, irradiance;
-#define AVS_ADD_SOURCE(j) LightAt(j, x, propagation, irradiance); e += irradiance * (u_sourceWeight[j] * exp(-u_toCentre[j] * sigma) * Tube(j, tubes0, tubes1));
+#define AVS_ADD_SOURCE(j) LightAt(j, x, propagation, irradiance); e += irradiance * (beyond * u_sourceWeight[j] * exp(-u_toCentre[j] * sigma) * Tube(j, tubes0, tubes1));
     AVS_FOR_EACH_LIGHT(AVS_ADD_SOURCE)
   }
   imageStore(u_source, cell, vec4(sigma * e, (1.0 - u_albedo) * max(sigma, 0.0)));

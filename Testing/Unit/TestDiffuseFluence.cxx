@@ -4,7 +4,7 @@
 // source and falls off towards the boundary; the nested solve's default sweeps converge on dense
 // and thin balls, where one grid's do not; the levels halve the grid over the same box; the
 // source is albedo (1 - g) sigma~t E T (albedo sigma~t E T for positional lights, whose tubes
-// carry the direct beam), zero at albedo 0.
+// carry the direct beam) times the share beyond the ambient ball, zero at albedo 0.
 #include "DiffuseFluence.h"
 
 #include <gtest/gtest.h>
@@ -178,12 +178,29 @@ TEST(DiffuseFluence, Source)
   const Vec3 x = g.IndexToWorld({ 3, 4, 5 });
   const std::array<Grid, 3> qp = DiffusionSource(sigma, { lamp }, tubes, g, s);
   const std::array<Grid, 3> qd = DiffusionSource(sigma, { light }, tubes, g, s);
+  // With a radius, both keep only the share beyond the ball (the ball term counts the rest):
+  // kappa = sqrt(sigma_a / D) = sqrt(3 (1 - albedo) sigma (1 - albedo g) sigma).
+  const double kr = std::sqrt(3.0 * 0.2 * 4.0 * 0.8 * 4.0) * 0.1;
+  const double beyond = (1.0 + kr) * std::exp(-kr);
+  EXPECT_NEAR(BeyondTheBall(4.0, s), beyond, 1e-12);
   for (int c = 0; c < 3; ++c)
   {
-    EXPECT_NEAR(
-      qp[c].At(3, 4, 5), 0.8 * 4.0 * lamp.FreeIrradiance(x)[c] * 0.5 * std::exp(-0.4), 1e-5);
-    EXPECT_NEAR(qd[c].At(3, 4, 5), 0.8 * 0.75 * 4.0 * (c + 1) * 0.5, 1e-5);
+    EXPECT_NEAR(qp[c].At(3, 4, 5),
+      beyond * 0.8 * 4.0 * lamp.FreeIrradiance(x)[c] * 0.5 * std::exp(-0.4),
+      1e-5);
+    EXPECT_NEAR(qd[c].At(3, 4, 5), beyond * 0.8 * 0.75 * 4.0 * (c + 1) * 0.5, 1e-5);
   }
+  // 1 without a radius, in a conservative medium, and in vacuum; it falls with the radius.
+  DiffusionSettings t = s;
+  t.AmbientRadius = 0.0;
+  EXPECT_EQ(BeyondTheBall(4.0, t), 1.0);
+  t.AmbientRadius = 0.1;
+  t.Albedo = 1.0;
+  EXPECT_EQ(BeyondTheBall(4.0, t), 1.0);
+  EXPECT_EQ(BeyondTheBall(0.0, s), 1.0);
+  t.Albedo = 0.8;
+  t.AmbientRadius = 0.5;
+  EXPECT_LT(BeyondTheBall(4.0, t), 0.7 * beyond);
   EXPECT_NEAR(DiffusionSourceWeight(TubeLaw::Forward, 0.8, 0.25), 0.6, 1e-12);
   EXPECT_NEAR(DiffusionSourceWeight(TubeLaw::DirectBeam, 0.8, 0.25), 0.8, 1e-12);
   s.Albedo = 0.0;
