@@ -35,13 +35,13 @@ std::array<Grid, 3> DiffusionSource(const Grid& averaged,
   const GridGeometry& target,
   const DiffusionSettings& settings)
 {
-  std::vector<double> weights, toCentre;
+  std::vector<double> weights;
   for (const Light& light : lights)
   {
     const TubeLaw law = TubeLawFor(true, light.Type);
     weights.push_back(DiffusionSourceWeight(law, settings.Albedo, settings.Anisotropy));
-    toCentre.push_back(law == TubeLaw::DirectBeam ? settings.AmbientRadius : 0.0);
   }
+  const double r = std::max(0.0, settings.AmbientRadius);
   std::array<Grid, 3> q{ Grid(target), Grid(target), Grid(target) };
   const auto& n = target.Dimensions;
   ParallelFor(n[2],
@@ -60,10 +60,15 @@ std::array<Grid, 3> DiffusionSource(const Grid& averaged,
               const double beyond = BeyondTheBall(sigma, settings);
               for (std::size_t l = 0; l < lights.size() && l < lightVolumes.size(); ++l)
               {
+                // T at x: the light volume holds T where the light enters the ball around a
+                // point, r before it, so T at x is its value r downstream (clamped into the
+                // box, beyond which nothing attenuates).
+                const Grid& tube = lightVolumes[l];
+                const Vec3 downstream = world + lights[l].PropagationDirection(world) * r;
                 e = e +
                   lights[l].FreeIrradiance(world) *
-                    (beyond * weights[l] * std::exp(-toCentre[l] * sigma) *
-                      lightVolumes[l].SampleWorld(world));
+                    (beyond * weights[l] *
+                      tube.SampleClamped(tube.Geometry.WorldToIndex(downstream)));
               }
             }
             const std::size_t index = target.Index(i, j, static_cast<int>(k));

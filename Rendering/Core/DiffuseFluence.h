@@ -1,18 +1,19 @@
 // The extended model's long-range multiple scattering (ARCHITECTURE.md, "Beyond the paper"):
 // the diffuse fluence phi of the light the tubes lose to scattering, from the diffusion
-// equation on a coarse grid, solved by a fixed number of red-black SOR sweeps.
+// equation on a coarse grid, solved by nested red-black SOR sweeps (coarse grids to fine).
 //
 //   -div(D grad phi) + sigma_a phi = q,   D = 1 / (3 sigma'),   sigma' = sigma~t (1 - albedo g),
-//   sigma_a = (1 - albedo) sigma~t,       q = sigma~t sum_j w_j E_j^free T~_j,
+//   sigma_a = (1 - albedo) sigma~t,       q = sigma~t b sum_j w_j E_j^free T_j(x),
 //
-// with sigma~t the averaged extinction (section 3), T~_j the light volumes (section 5; for
-// positional lights the direct beam, TubeLaw::DirectBeam, taken from the ball's entry on to x by
-// exp(-r sigma~t)), w_j = DiffusionSourceWeight (albedo (1 - g) for directional lights, albedo for
-// positional ones) and E_j^free the lights' free irradiance (RGB: phi has three channels). D is
-// limited to TransportLengthLimit / 3; cells with sigma' h < VacuumOpticalDepth are vacuum; a face
-// between the medium and vacuum (or the grid's border) carries Marshak's condition phi = 2 D
-// dphi/dn; the solve runs on a hierarchy of grids from coarse to fine (ComputeDiffusion). The ray
-// caster adds T (1 - exp(-sigma_t dt)) albedo c phi / (4 pi) per sample.
+// with sigma~t the averaged extinction (section 3), T_j the light volumes (section 5; for
+// positional lights the direct beam, TubeLaw::DirectBeam) at x (read r downstream of x, since a
+// light volume holds T at the ball's entry), w_j = DiffusionSourceWeight (albedo (1 - g) for
+// directional lights, albedo for positional ones), b = BeyondTheBall (the share the ball term does
+// not count) and E_j^free the lights' free irradiance (RGB: phi has three channels). D is limited
+// to TransportLengthLimit / 3; cells with sigma' h < VacuumOpticalDepth are vacuum; a face between
+// the medium and vacuum (or the grid's border) carries Marshak's condition phi = 2 D dphi/dn.
+// The ray caster adds T (1 - exp(-sigma_t dt)) albedo c (phi + g clamp(3 D dphi/dt, -phi, phi))
+// / (4 pi) per sample: the P1 field's light scattered towards the camera by the phase function.
 #ifndef avs_DiffuseFluence_h
 #define avs_DiffuseFluence_h
 
@@ -34,9 +35,10 @@ struct DiffusionSettings
   int Iterations = 12;               ///< red-black SOR sweeps (each: red then black cells)
   int CoarseIterations = 32;         ///< the sweeps on each coarser level (ComputeDiffusion)
   double Relaxation = 1.85;          ///< SOR factor omega in (0, 2)
-  double TransportLengthLimit = 1.0; ///< 1 / sigma' at most (world units; 8 r in the renderers)
-  /// r: a light volume holds T where the light enters the ball around x; a direct-beam tube's
-  /// source takes it the ball's near half further, to x: exp(-r sigma~t(x)).
+  double TransportLengthLimit = 1.0; ///< 1 / sigma' at most (world units; 16 r in the renderers)
+  /// r: a light volume holds T where the light enters the ball around a point, r before it, so
+  /// the source reads T at x r downstream of x; and it keeps only the light's share beyond the
+  /// ball (BeyondTheBall).
   double AmbientRadius = 0.0;
 };
 
@@ -51,8 +53,7 @@ constexpr double TransportLengthLimitInRadii = 16.0;
 /// The share of sigma~t E T~ that a light's tube gives the diffusion as its source, by the law of
 /// its tube (TubeLawFor(true, type)): albedo (1 - g) where the tube's F keeps the
 /// forward-scattered share g (Forward), albedo where it carries the direct light alone
-/// (DirectBeam: all scattered light goes to the diffusion, and the light volume's T at the ball's
-/// entry is taken on to x by exp(-r sigma~t), DiffusionSettings::AmbientRadius).
+/// (DirectBeam: all scattered light goes to the diffusion).
 double DiffusionSourceWeight(TubeLaw law, double albedo, double anisotropy);
 
 /// The share of the light diffusing from a point source that lies beyond the ambient ball

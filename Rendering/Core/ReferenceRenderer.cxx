@@ -251,6 +251,10 @@ void CastRay(const VolumeScene& scene,
       L = L + inscattered(o + d * (t0 + (i + 0.5) * dt)) * dt;
     }
   }
+  // The extended model's previous sample of phi along the ray (index -2: none).
+  Vec3 phiBefore{ 0, 0, 0 };
+  int phiBeforeIndex = -2;
+  const double reducedFloor = 1.0 / std::max(1e-30, TransportLengthLimitInRadii * p.AmbientRadius);
   double T = 1.0;
   for (int i = 0; i < n && T >= p.TerminationTransmittance; ++i)
   {
@@ -285,14 +289,27 @@ void CastRay(const VolumeScene& scene,
     {
       // Emission (eq. 8.7).
       L = L + c * (T * (1.0 - p.Albedo) * sigmaT * p.EmissionWeight * dt);
-      // The extended model's diffuse light: albedo c phi / (4 pi) per unit optical depth, as
-      // the exact integral over the step of a source constant on it.
+      // The extended model's diffuse light: albedo c / (4 pi) per unit optical depth times
+      // what the P1 field scatters towards the camera, phi + g clamp(3 J.w, -phi, phi) with
+      // 3 J.w = 3 D dphi/dt along the ray (the difference from the previous sample; 0 at the
+      // first), as the exact integral over the step of a source constant on it.
       if (v.Diffuse.size() == 3 && sigmaT > 0.0)
       {
         const Vec3 phi{ SampleLocalClamped(v.Diffuse[0], x),
           SampleLocalClamped(v.Diffuse[1], x),
           SampleLocalClamped(v.Diffuse[2], x) };
-        L = L + Mul(c, phi) * (T * (1.0 - extinction) * p.Albedo / (4.0 * Pi));
+        const double d3 = 1.0 /
+          std::max(
+            (1.0 - p.Albedo * p.Anisotropy) * SampleLocalClamped(v.Averaged, x), reducedFloor);
+        Vec3 scattered = phi;
+        for (int ch = 0; ch < 3; ++ch)
+        {
+          const double slope = phiBeforeIndex == i - 1 ? (phi[ch] - phiBefore[ch]) / dt : 0.0;
+          scattered[ch] += p.Anisotropy * std::clamp(d3 * slope, -phi[ch], phi[ch]);
+        }
+        phiBefore = phi;
+        phiBeforeIndex = i;
+        L = L + Mul(c, scattered) * (T * (1.0 - extinction) * p.Albedo / (4.0 * Pi));
       }
       // Ambient in-scattering from the ball around x' (eqs. 8.8-8.9), weighted by the
       // transmittance r before x'. x' is a sample, lag + 1 steps on, and the transmittance r

@@ -138,7 +138,7 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   // Lights in the data's local frame (a rigid map of the data's frame: distances and cones
   // stay).
   float position[8][3] = {}, axis[8][3] = {}, irradiance[8][3] = {}, attenuation[8][3] = {};
-  float coneCos[8] = {}, exponent[8] = {}, weight[8] = {}, toCentre[8] = {};
+  float coneCos[8] = {}, exponent[8] = {}, weight[8] = {};
   for (int j = 0; j < n; ++j)
   {
     const avs::Light& l = lights[j];
@@ -155,7 +155,6 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
     exponent[j] = l.IsSpot() ? static_cast<float>(l.Exponent) : 0.0f;
     const avs::TubeLaw law = avs::TubeLawFor(true, l.Type);
     weight[j] = static_cast<float>(avs::DiffusionSourceWeight(law, p.Albedo, p.Anisotropy));
-    toCentre[j] = law == avs::TubeLaw::DirectBeam ? static_cast<float>(p.AmbientRadius) : 0.0f;
   }
   glUniform3fv(location("u_lightPosition"), 8, &position[0][0]);
   glUniform3fv(location("u_lightAxis"), 8, &axis[0][0]);
@@ -164,7 +163,6 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   glUniform1fv(location("u_lightConeCos"), 8, coneCos);
   glUniform1fv(location("u_lightExponent"), 8, exponent);
   glUniform1fv(location("u_sourceWeight"), 8, weight);
-  glUniform1fv(location("u_toCentre"), 8, toCentre);
   glUniform3f(location("u_lightDimensions"),
     static_cast<float>(lightDimensions[0]),
     static_cast<float>(lightDimensions[1]),
@@ -262,7 +260,7 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   return true;
 }
 
-void vtkAVSDiffuseVolume::Bind(vtkShaderProgram* program)
+void vtkAVSDiffuseVolume::Bind(vtkShaderProgram* program, const avs::ScatteringParameters& p)
 {
   if (!this->Texture)
   {
@@ -270,6 +268,9 @@ void vtkAVSDiffuseVolume::Bind(vtkShaderProgram* program)
   }
   this->Texture->Activate();
   program->SetUniformi("u_diffuse", this->Texture->GetTextureUnit());
+  program->SetUniformf("u_anisotropy", static_cast<float>(p.Anisotropy));
+  program->SetUniformf("u_reducedFloor",
+    static_cast<float>(1.0 / std::max(1e-30, avs::TransportLengthLimitInRadii * p.AmbientRadius)));
 }
 
 void vtkAVSDiffuseVolume::Unbind()

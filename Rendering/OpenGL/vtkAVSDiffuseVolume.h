@@ -60,8 +60,9 @@ public:
     std::string& error);
   /// Whether a fluence is uploaded.
   bool IsReady() const { return this->Texture != nullptr; }
-  /// Activates the texture and sets the program's u_diffuse and u_diffuseDimensions.
-  void Bind(vtkShaderProgram* program);
+  /// Activates the texture and sets the program's u_diffuse, u_anisotropy and u_reducedFloor
+  /// (the flux limiter's, for the flux term along the ray) for `resolved`.
+  void Bind(vtkShaderProgram* program, const avs::ScatteringParameters& resolved);
   void Unbind();
   void ReleaseGraphicsResources(vtkWindow* window);
 

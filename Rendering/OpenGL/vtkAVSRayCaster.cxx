@@ -462,7 +462,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
         error = "the diffuse fluence is not uploaded";
         return false;
       }
-      this->Diffuse.Bind(program);
+      this->Diffuse.Bind(program, frame.Parameters);
     }
   }
 

@@ -29,7 +29,13 @@
 // the diffusion solve (Core/DiffuseFluence.h), interpolated onto the light grid, with the
 // averaged sigma_t in alpha; the ring's samples keep the phi their InScattered read.
 uniform sampler3D u_diffuse;
+uniform float u_anisotropy;
+uniform float u_reducedFloor; // 1 / the flux limiter's transport length
 vec3 g_phi;
+float g_averaged;
+// The previous sample's phi and its index (-2: none), for phi's derivative along the ray.
+vec3 g_phiBefore = vec3(0.0);
+int g_phiBeforeIndex = -2;
 #elif !defined(AVS_AVERAGED_SLOT)
 uniform sampler3D u_averagedExtinction;
 #endif
@@ -51,6 +57,18 @@ uniform float u_tableTauMaximum;
 uniform float u_albedo;
 uniform float u_ambientRadius;
 uniform float u_emissionWeight;
+#ifdef AVS_DIFFUSE
+// What the sample i scatters towards the camera of the diffuse field (DiffuseFluence.h,
+// ScatteredFluence): phi + g clamp(3 J.w, -phi, phi), J.w = D dphi/dt along the ray.
+vec3 ScatteredFluence(vec3 phi, float averaged, int i, float dt)
+{
+  vec3 slope = g_phiBeforeIndex == i - 1 ? (phi - g_phiBefore) / dt : vec3(0.0);
+  g_phiBefore = phi;
+  g_phiBeforeIndex = i;
+  float d3 = 1.0 / max((1.0 - u_albedo * u_anisotropy) * averaged, u_reducedFloor);
+  return phi + u_anisotropy * clamp(d3 * slope, -phi, phi);
+}
+#endif
 
 int g_lag;           // k = floor(r / dt)
 float g_lagFraction; // f = r / dt - k
@@ -167,6 +185,7 @@ vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified)
   vec4 diffuse = textureLod(u_diffuse, lc, 0.0);
   float averaged = diffuse.a;
   g_phi = diffuse.rgb;
+  g_averaged = averaged;
 #elif defined(AVS_AVERAGED_SLOT)
   float averaged = AVS_AVERAGED_SLOT < 4 ? tubes0[AVS_AVERAGED_SLOT & 3] : tubes1[AVS_AVERAGED_SLOT & 3];
 #else
@@ -237,7 +256,8 @@ bool EffectContinues(float T, int i)
     // ring, below, from the fetch of the sample's own InScattered.)
     if (here.a > 0.0 && T >= u_termination)
     {
-      vec3 phi = textureLod(u_diffuse, index * g_lightScale + g_lightOffset, 0.0).rgb;
+      vec4 diffuse = textureLod(u_diffuse, index * g_lightScale + g_lightOffset, 0.0);
+      vec3 phi = ScatteredFluence(diffuse.rgb, diffuse.a, i, dt);
       L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * here.rgb * phi;
     }
 #endif
@@ -264,7 +284,8 @@ bool EffectContinues(float T, int i)
       // that adds it passed the test above), phi from the InScattered just now.
       if (T >= u_termination)
       {
-        L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * here.rgb * g_phi;
+        L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * here.rgb *
+          ScatteredFluence(g_phi, g_averaged, i, dt);
       }
 #endif
     }

@@ -4,8 +4,8 @@
 // The diffusion grid spans the data's lattice box; positions are in the data's local frame
 // (lights too: the free irradiance depends only on distances and the cone). Two stages:
 //  u_stage 0, the source of one level of the nested solve: per cell, q = sigma~t sum_j w_j
-//    E_j^free T~_j into u_source (T~_j of direct-beam tubes taken from the ball's entry on to the
-//    cell: exp(-r sigma~t)) (rgb) with sigma_a (a), and (phi, D) into u_phi (D = 0: vacuum), from
+//    E_j^free T_j b into u_source (T_j at the cell, the light volume r downstream; b the share
+//    beyond the ball) (rgb) with sigma_a (a), and (phi, D) into u_phi (D = 0: vacuum), from
 //    the averaged extinction and the packed light volumes on the light grid; phi starts from the
 //    coarser level's, interpolated (0 on the coarsest level and in vacuum);
 //  u_stage 1, one SOR half-sweep (dispatched over half the x range): the cells with
@@ -35,16 +35,10 @@ uniform sampler3D u_lightVolumes1;
 uniform float u_albedo;
 uniform float u_anisotropy;
 uniform float u_sourceWeight[8]; // DiffusionSourceWeight of each light's tube law
-uniform float u_toCentre[8];     // r for direct-beam tubes (T at the ball's entry, on to x), else 0
 uniform float u_relaxation;
 uniform float u_ambientRadius;   // r
 uniform float u_transportLimit;  // 1 / sigma' at most
 uniform float u_vacuum;          // VacuumOpticalDepth / mean spacing
-
-float Tube(int j, vec4 t0, vec4 t1)
-{
-  return j < 4 ? t0[clamp(j, 0, 3)] : t1[clamp(j - 4, 0, 3)];
-}
 
 // D of a cell of averaged extinction sigma; 0 for vacuum (sigma' h below VacuumOpticalDepth).
 float Diffusivity(float sigma)
@@ -69,6 +63,17 @@ vec3 Coarser(vec3 f)
   return mix(mix(c00, c10, t.y), mix(c01, c11, t.y), t.z);
 }
 
+// Light j's transmittance at x (local frame): the light volume holds T where the light enters
+// the ball around a point, r before it, so T at x is its value r downstream, x + r p (clamped
+// into the box, beyond which nothing attenuates).
+float Downstream(int j, vec3 x)
+{
+  vec3 f = clamp(x / max(u_spacing * vec3(u_dimensions - 1), vec3(1e-30)), vec3(0.0), vec3(1.0));
+  vec3 lc = (f * (u_lightDimensions - 1.0) + 0.5) / u_lightDimensions;
+  return j < 4 ? textureLod(u_lightVolumes0, lc, 0.0)[clamp(j, 0, 3)]
+               : textureLod(u_lightVolumes1, lc, 0.0)[clamp(j - 4, 0, 3)];
+}
+
 void Source(ivec3 cell)
 {
   vec3 f = vec3(cell) / max(vec3(u_dimensions - 1), vec3(1.0));
@@ -78,18 +83,12 @@ void Source(ivec3 cell)
   vec3 e = vec3(0.0);
   if (sigma > 0.0)
   {
-    vec4 tubes0 = textureLod(u_lightVolumes0, lc, 0.0);
-#if AVS_NUMBER_OF_LIGHTS > 4
-    vec4 tubes1 = textureLod(u_lightVolumes1, lc, 0.0);
-#else
-    vec4 tubes1 = vec4(1.0);
-#endif
     // BeyondTheBall: the light's share beyond the ball, which the table A does not count.
     float reduced = (1.0 - u_albedo * u_anisotropy) * sigma;
     float kr = sqrt(3.0 * (1.0 - u_albedo) * sigma * max(reduced, 1.0 / u_transportLimit)) * u_ambientRadius;
     float beyond = (1.0 + kr) * exp(-kr);
     vec3 propagation, irradiance;
-#define AVS_ADD_SOURCE(j) LightAt(j, x, propagation, irradiance); e += irradiance * (beyond * u_sourceWeight[j] * exp(-u_toCentre[j] * sigma) * Tube(j, tubes0, tubes1));
+#define AVS_ADD_SOURCE(j) LightAt(j, x, propagation, irradiance); e += irradiance * (beyond * u_sourceWeight[j] * Downstream(j, x + u_ambientRadius * propagation));
     AVS_FOR_EACH_LIGHT(AVS_ADD_SOURCE)
   }
   imageStore(u_source, cell, vec4(sigma * e, (1.0 - u_albedo) * max(sigma, 0.0)));

@@ -171,8 +171,7 @@ TEST(DiffuseFluence, Source)
     EXPECT_NEAR(q[c].At(3, 4, 5), 0.8 * 0.75 * 4.0 * (c + 1) * 0.5, 1e-5);
   }
   // A positional light's tube carries the direct light alone (TubeLaw::DirectBeam): all the
-  // light scattered out of it, albedo sigma~t E T, is the source, with T taken from the ball's
-  // entry on to the point (exp(-r sigma~t)); directional lights do not move theirs.
+  // light scattered out of it, albedo sigma~t E T, is the source.
   s.AmbientRadius = 0.1;
   const Light lamp = Light::Point({ 0.3, 0.2, 0.1 }, { 1, 2, 3 });
   const Vec3 x = g.IndexToWorld({ 3, 4, 5 });
@@ -185,11 +184,23 @@ TEST(DiffuseFluence, Source)
   EXPECT_NEAR(BeyondTheBall(4.0, s), beyond, 1e-12);
   for (int c = 0; c < 3; ++c)
   {
-    EXPECT_NEAR(qp[c].At(3, 4, 5),
-      beyond * 0.8 * 4.0 * lamp.FreeIrradiance(x)[c] * 0.5 * std::exp(-0.4),
-      1e-5);
+    EXPECT_NEAR(qp[c].At(3, 4, 5), beyond * 0.8 * 4.0 * lamp.FreeIrradiance(x)[c] * 0.5, 1e-5);
     EXPECT_NEAR(qd[c].At(3, 4, 5), beyond * 0.8 * 0.75 * 4.0 * (c + 1) * 0.5, 1e-5);
   }
+  // T at the point: a light volume holds T where the light enters the ball around a point, r
+  // before it, so the source reads it r downstream. The light shines along -z; a tube of T = k
+  // (the z index) gives T = 5 - r / spacing = 4.8 at k = 5, and at the grid's last layer the
+  // value there (clamped).
+  Grid ramp(g);
+  for (int k = 0; k < 8; ++k)
+    for (int j = 0; j < 8; ++j)
+      for (int i = 0; i < 8; ++i)
+      {
+        ramp.At(i, j, k) = static_cast<float>(k);
+      }
+  const std::array<Grid, 3> qr = DiffusionSource(sigma, { light }, { ramp }, g, s);
+  EXPECT_NEAR(qr[0].At(3, 4, 5), beyond * 0.8 * 0.75 * 4.0 * 4.8, 1e-4);
+  EXPECT_NEAR(qr[0].At(3, 4, 0), beyond * 0.8 * 0.75 * 4.0 * 0.0, 1e-4);
   // 1 without a radius, in a conservative medium, and in vacuum; it falls with the radius.
   DiffusionSettings t = s;
   t.AmbientRadius = 0.0;
