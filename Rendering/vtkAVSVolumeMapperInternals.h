@@ -113,6 +113,9 @@ struct vtkAVSVolumeMapper::Internals
   int DiffuseIterations = -1;
   int DiffuseCoarseIterations = -1;
   int DiffuseGridMaximum = -1;
+  /// The lights the fluence was solved for (its source is their irradiance: a light's intensity,
+  /// colour, attenuation or cone changes it without changing a light volume).
+  std::vector<double> DiffuseLights;
 
   // Ambient occlusion.
   std::array<int, 3> OcclusionDimensions{ 0, 0, 0 };

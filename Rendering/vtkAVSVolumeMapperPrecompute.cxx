@@ -235,6 +235,12 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
       rebuilt = true;
       ++this->NumberOfLightVolumeRebuilds;
     }
+    // What the light volume does not depend on (its transmittances), but the extended model's
+    // source does: always the current light's.
+    state.DataFrame.Irradiance = dataLight.Irradiance;
+    state.DataFrame.Attenuation = dataLight.Attenuation;
+    state.DataFrame.ConeAngle = dataLight.ConeAngle;
+    state.DataFrame.Exponent = dataLight.Exponent;
   }
   if (!gpu && changed)
   {
@@ -262,8 +268,19 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
     in.DiffuseUploaded = false;
     return true;
   }
+  std::vector<double> lightKey;
+  for (const auto& state : in.Lights)
+  {
+    const avs::Light& l = state.DataFrame;
+    for (const avs::Vec3& v : { l.Position, l.FocalPoint, l.Irradiance, l.Attenuation })
+    {
+      lightKey.insert(lightKey.end(), { v.x, v.y, v.z });
+    }
+    lightKey.insert(lightKey.end(),
+      { static_cast<double>(l.Type), l.ConeAngle, l.Exponent, rp.Albedo, rp.Anisotropy });
+  }
   if (rebuilt || !in.DiffuseUploaded || in.DiffuseOnGPU != (gpu ? 1 : 0) ||
-    in.DiffuseIterations != rp.DiffusionIterations ||
+    in.DiffuseLights != lightKey || in.DiffuseIterations != rp.DiffusionIterations ||
     in.DiffuseCoarseIterations != rp.DiffusionCoarseIterations ||
     in.DiffuseGridMaximum != rp.DiffusionVolumeMaximumDimension)
   {
@@ -298,6 +315,7 @@ bool vtkAVSVolumeMapper::PrepareScattering(const avs::ScatteringTable* table,
     in.DiffuseIterations = rp.DiffusionIterations;
     in.DiffuseCoarseIterations = rp.DiffusionCoarseIterations;
     in.DiffuseGridMaximum = rp.DiffusionVolumeMaximumDimension;
+    in.DiffuseLights = lightKey;
     ++this->NumberOfDiffusionRebuilds;
   }
   return true;

@@ -103,13 +103,15 @@ public:
 
   ///@{
   /**
-   * The model of ambient scattering. PaperModel (0, the default): Ament et al. 2013 as this
-   * project implements it (ALGORITHM.md sections 3-6). ExtendedModel (1): the paper's model plus
+   * The model of ambient scattering. ExtendedModel (1, the default): the paper's model plus
    * long-range multiple scattering, the diffuse fluence of a diffusion solve on a coarse grid
-   * sourced by the light the tubes deliver (ARCHITECTURE.md, "Beyond the paper"); brighter and
-   * closer to the truth in thick clouds lit from the side, the same in optically thin media.
-   * Its fluence comes with the averaged extinction in one texture fetch per sample (in place of
-   * the averaged extinction's own), and it costs the solve at each light-volume rebuild.
+   * sourced by the light the tubes deliver (ARCHITECTURE.md, "Beyond the paper"); closer to the
+   * path tracer than the paper's model on every scene of the accuracy study (README, "Accuracy
+   * against the truth"), brighter in thick clouds lit from the side, the same in optically thin
+   * media. Its fluence comes with the averaged extinction in one texture fetch per sample (in
+   * place of the averaged extinction's own), and it costs the solve at each light-volume
+   * rebuild. PaperModel (0): Ament et al. 2013 as this project implements it (ALGORITHM.md
+   * sections 3-6).
    */
   enum
   {
@@ -149,7 +151,7 @@ protected:
   int LightVolumeMaximumDimension = 128;
   int DiffusionVolumeMaximumDimension = 64;
   char* ScatteringTableFileName = nullptr;
-  int ScatteringModel = PaperModel;
+  int ScatteringModel = ExtendedModel;
   vtkAmbientScatteringTable* Table;
 
 private:

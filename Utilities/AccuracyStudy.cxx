@@ -400,7 +400,8 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
     }
     vtkNew<vtkEmissionAbsorptionVolumeMapper> ea;
     vtkNew<vtkAmbientOcclusionVolumeMapper> ao;
-    vtkNew<vtkAmbientScatteringVolumeMapper> as;
+    vtkNew<vtkAmbientScatteringVolumeMapper> as; // the paper's model
+    as->SetScatteringModelToPaper();
     ao->SetAmbientWeight(k);
     ao->SetOcclusionRadius(settings.AmbientRadius);
     as->SetAmbientRadius(settings.AmbientRadius);

@@ -38,7 +38,7 @@ struct ScatteringParameters
   double LightScale = 1.0;
 
   // The extended model (DiffuseFluence.h).
-  ScatteringModel Model = ScatteringModel::Paper;
+  ScatteringModel Model = ScatteringModel::Extended;
   int DiffusionVolumeMaximumDimension = 64; ///< the diffusion grid: the light grid, capped
   int DiffusionIterations = 12;             ///< red-black SOR sweeps on the diffusion grid
   int DiffusionCoarseIterations = 32; ///< the sweeps on each coarser level of the nested solve

@@ -218,6 +218,9 @@ bool EffectContinues(float T, int i)
   g_tableScale = (u_tableSize - 1.0) / u_tableSize;
   g_tableOffset = 0.5 / u_tableSize;
   g_tauScale = 1.0 / log(1.0 + u_tableTauMaximum);
+#ifdef AVS_DIFFUSE
+  g_phiBeforeIndex = -2; // per ray (a fragment may cast several: the image sample distance)
+#endif
 #define AVS_THETA_COORDINATE(j) g_thetaCoordinate[j] = ThetaCoordinate(dot(u_lightAxis[j], -direction));
   AVS_FOR_EACH_LIGHT(AVS_THETA_COORDINATE)
 #ifdef AVS_TABLE_COLUMN

@@ -68,9 +68,11 @@ int main(int argc, char* argv[])
   int failures = 0;
   auto data = MakeTestVolume(32);
 
-  // --- Rebuild counters: ambient scattering.
+  // --- Rebuild counters: ambient scattering (from the paper's model, then the extended one).
   {
     vtkNew<vtkAmbientScatteringVolumeMapper> mapper;
+    AVS_CHECK(mapper->GetScatteringModel() == vtkAmbientScatteringVolumeMapper::ExtendedModel);
+    mapper->SetScatteringModelToPaper();
     mapper->SetInputData(data);
     Scene scene(mapper);
     scene.Render();

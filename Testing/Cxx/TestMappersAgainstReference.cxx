@@ -45,6 +45,7 @@ int main(int argc, char* argv[])
   as->SetAmbientRadius(0.08);
   as->SetAnisotropy(0.4);
   as->SetAlbedo(0.9);
+  as->SetScatteringModelToPaper();
   vtkNew<vtkAmbientScatteringVolumeMapper> asx;
   asx->SetAnisotropy(0.4);
   asx->SetAlbedo(0.9);
@@ -155,10 +156,8 @@ int main(int argc, char* argv[])
       reference->SetDirectLightWeight(direct);
       reference->SetEmissionWeight(emission);
       reference->SetRenderMode(m == 3 ? 2 : m);
-      if (m == 3)
-      {
-        reference->SetScatteringModelToExtended();
-      }
+      reference->SetScatteringModel(m == 3 ? vtkVolumeReferenceRenderer::ExtendedModel
+                                           : vtkVolumeReferenceRenderer::PaperModel);
       reference->SetOcclusionRadius(0.15);
       reference->SetAmbientRadius(radius);
       reference->SetLightVolumeMaximumDimension(view == 2 ? 24 : 256);

@@ -38,7 +38,9 @@ def main():
     for cls in (ambientscattering.vtkAmbientScatteringVolumeMapper,
                 ambientscattering.vtkVolumeReferenceRenderer):
         m = cls()
-        check(m.GetScatteringModel() == cls.PaperModel == 0, "the paper's model is not the default")
+        check(m.GetScatteringModel() == cls.ExtendedModel == 1, "the extended model is not the default")
+        m.SetScatteringModelToPaper()
+        check(m.GetScatteringModel() == cls.PaperModel == 0, "no paper's model")
         m.SetScatteringModelToExtended()
         check(m.GetScatteringModel() == cls.ExtendedModel == 1, "no extended model")
         check(m.GetScatteringModelAsString() == "Extended", "model name")

@@ -2,7 +2,9 @@
 script with only the mapper replaced by vtkAmbientScatteringVolumeMapper, on real volumes, under
 the lights an ordinary VTK scene has: the automatic headlight, a vtkLightKit, two vtkLights of
 intensity 1. In VTK light units (irradiance 4 pi x intensity x colour) the ambient-scattering
-picture's mean brightness must be within 0.5-2x VTK's; without the 4 pi it is at 2-12 %.
+picture's mean brightness must be within 0.5-3x VTK's (the default, extended model adds the
+multiple scattering VTK's single-scattering shading lacks: up to 2.3x on the embryo; the paper's
+model stayed within 2x); without the 4 pi it is at 2-12 %.
 
 Usage: TestSwapMapper.py DATA_DIR (the folder with embryo.slc and wdas_cloud_sixteenth.vdb)."""
 import os
@@ -101,7 +103,7 @@ def main(data):
                   % (name, lighting, vtk, ours, ratio))
             if vtk < 1.0:
                 failures.append("%s, %s: VTK's picture is blank" % (name, lighting))
-            if errors or not 0.5 <= ratio <= 2.0:
+            if errors or not 0.5 <= ratio <= 3.0:
                 failures.append("%s, %s: ratio %.2f, %d errors" % (name, lighting, ratio, errors))
     for f in failures:
         print("FAILED:", f)
