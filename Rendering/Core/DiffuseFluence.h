@@ -32,8 +32,8 @@ struct DiffusionSettings
 {
   double Albedo = 0.9;
   double Anisotropy = 0.0;
-  int Iterations = 12;               ///< red-black SOR sweeps (each: red then black cells)
-  int CoarseIterations = 32;         ///< the sweeps on each coarser level (ComputeDiffusion)
+  int Iterations = 8;                ///< red-black SOR sweeps (each: red then black cells)
+  int CoarseIterations = 24;         ///< the sweeps on each coarser level (ComputeDiffusion)
   double Relaxation = 1.85;          ///< SOR factor omega in (0, 2)
   double TransportLengthLimit = 1.0; ///< 1 / sigma' at most (world units; 16 r in the renderers)
   /// r: a light volume holds T where the light enters the ball around a point, r before it, so

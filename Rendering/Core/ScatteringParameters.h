@@ -40,8 +40,8 @@ struct ScatteringParameters
   // The extended model (DiffuseFluence.h).
   ScatteringModel Model = ScatteringModel::Extended;
   int DiffusionVolumeMaximumDimension = 64; ///< the diffusion grid: the light grid, capped
-  int DiffusionIterations = 12;             ///< red-black SOR sweeps on the diffusion grid
-  int DiffusionCoarseIterations = 32; ///< the sweeps on each coarser level of the nested solve
+  int DiffusionIterations = 8;              ///< red-black SOR sweeps on the diffusion grid
+  int DiffusionCoarseIterations = 24; ///< the sweeps on each coarser level of the nested solve
 
   // Ambient occlusion (section 7).
   double OcclusionRadius = 0.0;   ///< R in data units; 0: the ambient radius

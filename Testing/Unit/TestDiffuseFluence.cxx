@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 using namespace avs;
 
@@ -89,9 +90,9 @@ TEST(DiffuseFluence, NestedDefaultSweepsConvergeOnDenseAndThinBalls)
   // 64 cells across (the study's clouds on their grid), lit from one side, from optical radius
   // about 60 down to 0.3: the thinner the ball, the further the light diffuses (up to the flux
   // limiter's D) and the more sweeps one grid needs. The nested solve with the default sweeps
-  // (12 on the finest level, 32 on each coarser one) is within 2 % of the converged fluence on
-  // all of them (0.5-1.6 %); 12 sweeps on the finest grid alone are far off on the thinner
-  // balls. (The residual stays large on the thin balls' rims, where phi is already right.)
+  // (8 on the finest level, 24 on each coarser one) is within 3 % of the converged fluence on
+  // all of them (0.8, 1.0 and 2.0 %); 8 sweeps on the finest grid alone are 14-88 % off. (The
+  // residual stays large on the thin balls' rims, where phi is already right.)
   const GridGeometry g = Box(64, 2.0 / 63.0);
   Light light;
   light.Type = LightType::Directional;
@@ -127,7 +128,11 @@ TEST(DiffuseFluence, NestedDefaultSweepsConvergeOnDenseAndThinBalls)
       }
       return e / norm;
     };
-    EXPECT_LT(error(nested), 0.02) << density;
+    std::printf("optical radius %.1f: nested %.4f, one grid %.4f off\n",
+      density * 30.0 * 2.0 / 63.0,
+      error(nested),
+      error(flat));
+    EXPECT_LT(error(nested), 0.03) << density;
     if (density < 10.0)
     {
       EXPECT_GT(error(flat), 0.2) << density;
