@@ -79,7 +79,8 @@ def main(plugin, out):
     for name, value in (("LightingModel", "Ambient Scattering"), ("Albedo", 0.9),
                         ("ScatteringAnisotropy", 0.0), ("AmbientRadius", 0.0),
                         ("LightScale", 1.0), ("EmissionWeight", 0.0),
-                        ("LightVolumeMaximumDimension", 128), ("MaximumGPUMemory", 0)):
+                        ("LightVolumeMaximumDimension", 128), ("MaximumGPUMemory", 0),
+                        ("ScatteringModel", "Extended")):
         checks.check(display.GetPropertyValue(name) == value,
                      "%s defaults to %r (got %r)" % (name, value, display.GetPropertyValue(name)))
 
@@ -106,6 +107,15 @@ def main(plugin, out):
     checks.check(mapper is not None and "MaximumGPUMemory: 512" in str(mapper),
                  "MaximumGPUMemory reaches the mapper")
     display.MaximumGPUMemory = 0
+    # The paper's model is a different picture, and back to the extended one the same.
+    display.ScatteringModel = "Paper"
+    paper = render("pv_ambient_scattering_paper")
+    checks.check(mapper is not None and "ScatteringModel: Paper" in str(mapper),
+                 "ScatteringModel reaches the mapper")
+    checks.check(t.psnr(base, paper) < 45.0, "the paper's model is another picture")
+    display.ScatteringModel = "Extended"
+    checks.check(t.psnr(base, render("pv_ambient_scattering_extended")) > 50.0,
+                 "back to the extended model, its picture")
 
     # --- The VTK side: the same scene with ParaView's VTK and the plugin's mapper class.
     source = vtkRTAnalyticSource()

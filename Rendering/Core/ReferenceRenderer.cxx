@@ -304,8 +304,10 @@ void CastRay(const VolumeScene& scene,
         Vec3 scattered = phi;
         for (int ch = 0; ch < 3; ++ch)
         {
+          // (phi itself, taken as at least 0: the relaxation may overshoot below 0 at vacuum)
+          const double positive = std::max(0.0, phi[ch]);
           const double slope = phiBeforeIndex == i - 1 ? (phi[ch] - phiBefore[ch]) / dt : 0.0;
-          scattered[ch] += p.Anisotropy * std::clamp(d3 * slope, -phi[ch], phi[ch]);
+          scattered[ch] = positive + p.Anisotropy * std::clamp(d3 * slope, -positive, positive);
         }
         phiBefore = phi;
         phiBeforeIndex = i;

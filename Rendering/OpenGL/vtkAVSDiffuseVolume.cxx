@@ -4,6 +4,7 @@
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSShaderAssembly.h"
 #include "vtkAVSShaders.h"
+#include "vtkAVSTextureMemory.h"
 #include "vtkAVSTextureUpload.h"
 
 #include "vtkOpenGLRenderWindow.h"
@@ -113,6 +114,13 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   // The nested solve's levels (DiffusionLevels), finest first: the finest is the texture the
   // ray caster reads, the coarser ones are held with their sources for the next solve.
   const std::vector<avs::GridGeometry> levels = avs::DiffusionLevels(grid);
+  for (std::size_t t = 2 * (levels.size() - 1); t < this->Coarser.size(); ++t)
+  {
+    if (this->Coarser[t])
+    {
+      this->Coarser[t]->ReleaseGraphicsResources(window);
+    }
+  }
   this->Coarser.resize(2 * (levels.size() - 1));
   for (std::size_t l = 0; l < levels.size(); ++l)
   {
@@ -258,6 +266,17 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
     return false;
   }
   return true;
+}
+
+double vtkAVSDiffuseVolume::HeldBytes() const
+{
+  double bytes = vtkAVSTextureMemory::Bytes(this->Texture) +
+    vtkAVSTextureMemory::Bytes(this->Fluence) + vtkAVSTextureMemory::Bytes(this->Source);
+  for (vtkTextureObject* t : this->Coarser)
+  {
+    bytes += vtkAVSTextureMemory::Bytes(t);
+  }
+  return bytes;
 }
 
 void vtkAVSDiffuseVolume::Bind(vtkShaderProgram* program, const avs::ScatteringParameters& p)

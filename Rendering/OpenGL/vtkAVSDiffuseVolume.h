@@ -58,6 +58,9 @@ public:
     const std::vector<avs::Light>& lights,
     const avs::ScatteringParameters& resolved,
     std::string& error);
+  /// The bytes of its textures (vtkAVSTextureMemory): the packed texture, and after a GPU solve
+  /// phi and q on every level, kept for the next solve.
+  double HeldBytes() const;
   /// Whether a fluence is uploaded.
   bool IsReady() const { return this->Texture != nullptr; }
   /// Activates the texture and sets the program's u_diffuse, u_anisotropy and u_reducedFloor

@@ -535,12 +535,14 @@ vtkTextureObject* vtkAVSRayCaster::GetAveragedExtinctionTexture() const
 
 double vtkAVSRayCaster::VolumeTextureBytes() const
 {
-  return this->Textures.HeldBytes();
+  return this->Textures.HeldBytes() + this->Diffuse.HeldBytes();
 }
 
 double vtkAVSRayCaster::PeakVolumeTextureBytes() const
 {
-  return this->Textures.GetPeakBytes();
+  // The extended model's textures stay from one solve to the next, through the rebuilds whose
+  // peaks the volume textures note.
+  return this->Textures.GetPeakBytes() + this->Diffuse.HeldBytes();
 }
 
 vtkTextureObject* vtkAVSRayCaster::GetLightVolumeTexture(int t) const

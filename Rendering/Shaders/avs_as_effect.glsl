@@ -66,7 +66,8 @@ vec3 ScatteredFluence(vec3 phi, float averaged, int i, float dt)
   g_phiBefore = phi;
   g_phiBeforeIndex = i;
   float d3 = 1.0 / max((1.0 - u_albedo * u_anisotropy) * averaged, u_reducedFloor);
-  return phi + u_anisotropy * clamp(d3 * slope, -phi, phi);
+  vec3 positive = max(phi, vec3(0.0)); // the relaxation may overshoot below 0 at vacuum
+  return positive + u_anisotropy * clamp(d3 * slope, -positive, positive);
 }
 #endif
 

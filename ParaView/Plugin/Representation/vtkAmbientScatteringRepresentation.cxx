@@ -117,6 +117,16 @@ int vtkAmbientScatteringRepresentation::GetLightVolumeMaximumDimension()
   return this->AmbientScatteringMapper->GetLightVolumeMaximumDimension();
 }
 
+void vtkAmbientScatteringRepresentation::SetScatteringModel(int model)
+{
+  this->AmbientScatteringMapper->SetScatteringModel(model);
+}
+
+int vtkAmbientScatteringRepresentation::GetScatteringModel()
+{
+  return this->AmbientScatteringMapper->GetScatteringModel();
+}
+
 void vtkAmbientScatteringRepresentation::SetSampleDistance(double distance)
 {
   for (vtkAVSVolumeMapper* m : this->Mappers())
@@ -214,6 +224,7 @@ void vtkAmbientScatteringRepresentation::PrintSelf(ostream& os, vtkIndent indent
   os << indent << "LightScale: " << this->GetLightScale() << "\n";
   os << indent << "EmissionWeight: " << this->GetEmissionWeight() << "\n";
   os << indent << "LightVolumeMaximumDimension: " << this->GetLightVolumeMaximumDimension() << "\n";
+  os << indent << "ScatteringModel: " << this->GetScatteringModel() << "\n";
   os << indent << "SampleDistance: " << this->GetSampleDistance() << "\n";
   os << indent << "UseJittering: " << this->GetUseJittering() << "\n";
   os << indent << "MaximumGPUMemory: " << this->GetMaximumGPUMemory() << " MiB\n";

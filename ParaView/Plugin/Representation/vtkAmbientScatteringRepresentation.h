@@ -111,6 +111,15 @@ public:
 
   ///@{
   /**
+   * The model of ambient scattering (vtkAmbientScatteringVolumeMapper::SetScatteringModel):
+   * 1, the extended model with long-range multiple scattering (the default); 0, the paper's.
+   */
+  void SetScatteringModel(int model);
+  int GetScatteringModel();
+  ///@}
+
+  ///@{
+  /**
    * Ray-marching step in data units for the three mappers. Default 0: half the smallest voxel
    * spacing.
    */
