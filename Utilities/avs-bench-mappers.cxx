@@ -112,33 +112,83 @@ struct Bench
     }
   }
 
-  /// Warm-up frame time, then the median over Frames frames with a moving camera.
-  std::pair<double, double> Measure(vtkVolumeMapper* mapper)
+  /// Volumes of `mappers` with the bench's property, in the renderer.
+  std::vector<vtkSmartPointer<vtkVolume>> AddVolumes(const std::vector<vtkVolumeMapper*>& mappers)
   {
-    vtkNew<vtkVolume> volume;
-    volume->SetMapper(mapper);
-    volume->SetProperty(this->Property);
-    this->Renderer->AddVolume(volume);
+    std::vector<vtkSmartPointer<vtkVolume>> volumes;
+    for (vtkVolumeMapper* mapper : mappers)
+    {
+      volumes.push_back(vtkSmartPointer<vtkVolume>::New());
+      volumes.back()->SetMapper(mapper);
+      volumes.back()->SetProperty(this->Property);
+      this->Renderer->AddVolume(volumes.back());
+    }
+    return volumes;
+  }
+  void RemoveVolumes(const std::vector<vtkSmartPointer<vtkVolume>>& volumes)
+  {
+    for (vtkVolume* volume : volumes)
+    {
+      this->Renderer->RemoveVolume(volume);
+    }
+  }
+  /// The frame time with volumes[shown] alone visible.
+  double FrameOf(const std::vector<vtkSmartPointer<vtkVolume>>& volumes, std::size_t shown)
+  {
+    for (std::size_t v = 0; v < volumes.size(); ++v)
+    {
+      volumes[v]->SetVisibility(v == shown);
+    }
+    return this->Frame();
+  }
+
+  /// Each mapper's warm-up frame time, then the median over Frames frames with a moving camera
+  /// (and the frames themselves). With several mappers their frames alternate at each camera
+  /// position, so that a machine whose speed drifts slows all alike.
+  struct Timing
+  {
+    double First = 0.0, Median = 0.0;
+    std::vector<double> Frames;
+  };
+  std::vector<Timing> MeasureEach(const std::vector<vtkVolumeMapper*>& mappers)
+  {
+    const auto volumes = this->AddVolumes(mappers);
     vtkCamera* camera = this->Renderer->GetActiveCamera();
     camera->SetPosition(0.5, 0.7, 4.2);
     camera->SetFocalPoint(0, 0, 0);
     camera->SetViewUp(0, 1, 0);
     this->Renderer->ResetCameraClippingRange();
-    const double first = this->Frame();
-    std::vector<double> times;
+    std::vector<Timing> timings(mappers.size());
+    for (std::size_t m = 0; m < mappers.size(); ++m)
+    {
+      timings[m].First = this->FrameOf(volumes, m);
+    }
     for (int f = 0; f < this->Frames; ++f)
     {
       camera->Azimuth(3.0);
       this->Renderer->ResetCameraClippingRange();
-      times.push_back(this->Frame());
+      for (std::size_t m = 0; m < mappers.size(); ++m)
+      {
+        timings[m].Frames.push_back(this->FrameOf(volumes, m));
+      }
     }
-    this->Renderer->RemoveVolume(volume);
-    return { first, Median(times) };
+    this->RemoveVolumes(volumes);
+    for (Timing& t : timings)
+    {
+      t.Median = Median(t.Frames);
+    }
+    return timings;
   }
 
-  /// Measure for two mappers at once, their frames alternating at each camera position (so that
-  /// a machine whose speed drifts slows both alike): warm-up frames, medians, and the median of
-  /// the per-position ratios b / a.
+  /// Warm-up frame time, then the median frame (MeasureEach of one mapper).
+  std::pair<double, double> Measure(vtkVolumeMapper* mapper)
+  {
+    const Timing t = this->MeasureEach({ mapper }).front();
+    return { t.First, t.Median };
+  }
+
+  /// Two mappers in alternation (MeasureEach): their warm-up and median frames, and the median
+  /// of the per-position ratios b / a.
   struct Pair
   {
     std::pair<double, double> A, B;
@@ -146,41 +196,15 @@ struct Bench
   };
   Pair MeasureInterleaved(vtkVolumeMapper* a, vtkVolumeMapper* b)
   {
-    vtkNew<vtkVolume> va, vb;
-    va->SetMapper(a);
-    vb->SetMapper(b);
-    for (vtkVolume* v : { va.Get(), vb.Get() })
+    const std::vector<Timing> t = this->MeasureEach({ a, b });
+    std::vector<double> ratios;
+    for (std::size_t f = 0; f < t[0].Frames.size(); ++f)
     {
-      v->SetProperty(this->Property);
-      this->Renderer->AddVolume(v);
+      ratios.push_back(t[1].Frames[f] / t[0].Frames[f]);
     }
-    vtkCamera* camera = this->Renderer->GetActiveCamera();
-    camera->SetPosition(0.5, 0.7, 4.2);
-    camera->SetFocalPoint(0, 0, 0);
-    camera->SetViewUp(0, 1, 0);
-    this->Renderer->ResetCameraClippingRange();
-    auto frame = [&](vtkVolume* shown)
-    {
-      va->SetVisibility(shown == va.Get());
-      vb->SetVisibility(shown == vb.Get());
-      return this->Frame();
-    };
     Pair p;
-    p.A.first = frame(va);
-    p.B.first = frame(vb);
-    std::vector<double> ta, tb, ratios;
-    for (int f = 0; f < this->Frames; ++f)
-    {
-      camera->Azimuth(3.0);
-      this->Renderer->ResetCameraClippingRange();
-      ta.push_back(frame(va));
-      tb.push_back(frame(vb));
-      ratios.push_back(tb.back() / ta.back());
-    }
-    this->Renderer->RemoveVolume(va);
-    this->Renderer->RemoveVolume(vb);
-    p.A.second = Median(ta);
-    p.B.second = Median(tb);
+    p.A = { t[0].First, t[0].Median };
+    p.B = { t[1].First, t[1].Median };
     p.Ratio = Median(ratios);
     return p;
   }
@@ -558,19 +582,8 @@ int main(int argc, char* argv[])
   double tfRebuild = 0.0, lightRebuild = 0.0, tfRebuildX = 0.0, lightRebuildX = 0.0;
   {
     vtkAmbientScatteringVolumeMapper* mappers[2] = { as4, asx4 };
-    vtkNew<vtkVolume> volumes[2];
-    for (int m = 0; m < 2; ++m)
-    {
-      volumes[m]->SetMapper(mappers[m]);
-      volumes[m]->SetProperty(b.Property);
-      b.Renderer->AddVolume(volumes[m]);
-    }
-    auto frame = [&](int shown)
-    {
-      volumes[0]->SetVisibility(shown == 0);
-      volumes[1]->SetVisibility(shown == 1);
-      return b.Frame();
-    };
+    const auto volumes = b.AddVolumes({ as4, asx4 });
+    auto frame = [&](int shown) { return b.FrameOf(volumes, static_cast<std::size_t>(shown)); };
     frame(0);
     frame(1);
     const int changes = 5;
@@ -602,9 +615,9 @@ int main(int argc, char* argv[])
         light[m].push_back(rebuilt - frame(m));
       }
     }
+    b.RemoveVolumes(volumes);
     for (int m = 0; m < 2; ++m)
     {
-      b.Renderer->RemoveVolume(volumes[m]);
       if (mappers[m]->GetNumberOfExtinctionRebuilds() - extinctionBefore[m] != changes ||
         mappers[m]->GetNumberOfLightVolumeRebuilds() - lightsBefore[m] != changes)
       {
