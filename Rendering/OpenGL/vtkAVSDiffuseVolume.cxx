@@ -124,8 +124,8 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   this->Coarser.resize(2 * (levels.size() - 1));
   for (std::size_t l = 0; l < levels.size(); ++l)
   {
-    vtkSmartPointer<vtkTextureObject>& phi = l == 0 ? this->Fluence : this->Coarser[2 * l - 2];
-    vtkSmartPointer<vtkTextureObject>& q = l == 0 ? this->Source : this->Coarser[2 * l - 1];
+    vtkSmartPointer<vtkTextureObject>& phi = this->LevelFluence(l);
+    vtkSmartPointer<vtkTextureObject>& q = this->LevelSource(l);
     if (!this->Allocate(window, phi, levels[l].Dimensions, nullptr, error) ||
       !this->Allocate(window, q, levels[l].Dimensions, nullptr, error))
     {
@@ -198,9 +198,9 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   {
     const avs::GridGeometry& level = levels[l];
     const std::array<int, 3>& n = level.Dimensions;
-    vtkTextureObject* phi = l == 0 ? this->Fluence : this->Coarser[2 * l - 2];
-    vtkTextureObject* q = l == 0 ? this->Source : this->Coarser[2 * l - 1];
-    vtkTextureObject* coarser = l + 1 < levels.size() ? this->Coarser[2 * l].Get() : phi;
+    vtkTextureObject* phi = this->LevelFluence(l);
+    vtkTextureObject* q = this->LevelSource(l);
+    vtkTextureObject* coarser = l + 1 < levels.size() ? this->LevelFluence(l + 1).Get() : phi;
     glUniform3i(location("u_dimensions"), n[0], n[1], n[2]);
     glUniform3f(location("u_spacing"),
       static_cast<float>(level.Spacing.x),

@@ -82,6 +82,15 @@ private:
   vtkSmartPointer<vtkTextureObject> Source;  ///< the GPU solve's q
   /// The nested solve's coarser levels (DiffusionLevels 1, 2, ...): phi and q of each.
   std::vector<vtkSmartPointer<vtkTextureObject>> Coarser;
+  /// phi and q of level l (0: Fluence and Source, then Coarser's pairs).
+  vtkSmartPointer<vtkTextureObject>& LevelFluence(std::size_t l)
+  {
+    return l == 0 ? this->Fluence : this->Coarser[2 * l - 2];
+  }
+  vtkSmartPointer<vtkTextureObject>& LevelSource(std::size_t l)
+  {
+    return l == 0 ? this->Source : this->Coarser[2 * l - 1];
+  }
   unsigned int Program = 0; ///< the GPU solve's program, for ProgramDefines
   std::string ProgramDefines;
   std::array<int, 3> Dimensions{ 0, 0, 0 }; ///< the texture's (the light grid)
