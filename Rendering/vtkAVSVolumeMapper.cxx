@@ -472,6 +472,8 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.Clip = in.Scene.Clip;
   frame.Blend = blend;
   frame.LightVolumeDimensions = in.LightGridDimensions;
+  frame.LightsPerPair = avs::ScatteringParameters::LightsPerPair(
+    in.Parameters.SampleDistance, in.Whole.Capped(in.Parameters.LightVolumeMaximumDimension));
   frame.WholeDimensions = in.Whole.Dimensions;
   frame.PieceOffset = in.PieceOffset;
   frame.OcclusionDimensions = in.OcclusionDimensions;

@@ -7,9 +7,11 @@
 // Scene: the built-in nebula (default 256^3), 512 x 512 pixels, the same sample distance and
 // transfer functions for every mapper, jittering off. Each mapper renders a warm-up frame (which
 // includes its precomputation), then frames with a camera turning 3 degrees per frame; the
-// median of their times is reported. Ambient scattering with 4 lights in both models (the
-// paper's, as4, and the extended one, asx4) renders in alternation, frame by frame, so that
-// their ratio (the median of the per-frame ratios) does not follow the machine's drifts. Then
+// median of their times is reported. The mappers render in alternation, frame by frame at each
+// camera position (with one light VTK's EA, ours, AO and ambient scattering, as1; with four
+// lights our EA and ambient scattering in both models, the paper's, as4, and the extended one,
+// asx4), and each ratio is the median of the per-position ratios, so that the ratios do not
+// follow the machine's drifts (--frames-only stops after them). Then
 // the rebuild after a transfer-function change and after a light move, for both models in
 // alternation: the frame after the change less the next frame, the median over five changes of
 // each kind.
@@ -180,33 +182,16 @@ struct Bench
     return timings;
   }
 
-  /// Warm-up frame time, then the median frame (MeasureEach of one mapper).
-  std::pair<double, double> Measure(vtkVolumeMapper* mapper)
+  /// The median over the camera positions of b's frame over a's (MeasureEach's frames at the
+  /// same positions).
+  static double RatioOf(const Timing& a, const Timing& b)
   {
-    const Timing t = this->MeasureEach({ mapper }).front();
-    return { t.First, t.Median };
-  }
-
-  /// Two mappers in alternation (MeasureEach): their warm-up and median frames, and the median
-  /// of the per-position ratios b / a.
-  struct Pair
-  {
-    std::pair<double, double> A, B;
-    double Ratio = 0.0;
-  };
-  Pair MeasureInterleaved(vtkVolumeMapper* a, vtkVolumeMapper* b)
-  {
-    const std::vector<Timing> t = this->MeasureEach({ a, b });
     std::vector<double> ratios;
-    for (std::size_t f = 0; f < t[0].Frames.size(); ++f)
+    for (std::size_t f = 0; f < a.Frames.size() && f < b.Frames.size(); ++f)
     {
-      ratios.push_back(t[1].Frames[f] / t[0].Frames[f]);
+      ratios.push_back(b.Frames[f] / a.Frames[f]);
     }
-    Pair p;
-    p.A = { t[0].First, t[0].Median };
-    p.B = { t[1].First, t[1].Median };
-    p.Ratio = Median(ratios);
-    return p;
+    return ratios.empty() ? 0.0 : Median(ratios);
   }
 
   struct Interaction
@@ -371,7 +356,8 @@ bool RunInteraction(Bench& b, int lightGrid)
 int main(int argc, char* argv[])
 {
   int voxels = 256, size = 512, frames = 10, lightGrid = 0;
-  bool interactionOnly = false, clipping = false, clipNothing = false, modelsOnly = false;
+  bool interactionOnly = false, clipping = false, clipNothing = false, modelsOnly = false,
+       framesOnly = false;
   std::string writeScene;
   for (int i = 1; i < argc; ++i)
   {
@@ -380,7 +366,8 @@ int main(int argc, char* argv[])
     {
       std::printf(
         "Usage: avs-bench-mappers [--voxels N] [--size N] [--frames N] [--light-grid N] "
-        "[--interaction-only | --scattering-models-only] [--clipping | --clipping-nothing] "
+        "[--interaction-only | --scattering-models-only] [--frames-only] "
+        "[--clipping | --clipping-nothing] "
         "[--write-scene FILE.vti]\n\n"
         "Median frame times of VTK's vtkGPUVolumeRayCastMapper and of the module's "
         "mappers on the built-in nebula\n(N^3 voxels, default 256), N x N pixels "
@@ -391,6 +378,7 @@ int main(int argc, char* argv[])
         "--interaction-only runs the interaction scenario alone.\n"
         "--scattering-models-only measures ambient scattering with 4 lights in the paper's "
         "and the extended model alone.\n"
+        "--frames-only: the frames and their ratios alone (no rebuilds, no interaction).\n"
         "--clipping: three clipping planes and cropping (fence) on every mapper;\n"
         "--clipping-nothing: planes outside the volume, every cropping region kept.\n"
         "--write-scene FILE.vti: write the nebula (for ParaView's peer, "
@@ -405,6 +393,11 @@ int main(int argc, char* argv[])
     if (arg == "--interaction-only")
     {
       interactionOnly = true;
+      continue;
+    }
+    if (arg == "--frames-only")
+    {
+      framesOnly = true;
       continue;
     }
     if (arg == "--scattering-models-only")
@@ -551,29 +544,45 @@ int main(int argc, char* argv[])
       clipNothing ? "outside the volume, every region kept" : "fence");
   }
 
-  std::pair<double, double> vtkTimes, eaTimes, aoTimes, as1Times;
+  // The frames: with one light VTK's EA, ours, AO and ambient scattering in alternation, then
+  // with four lights our EA (which does not use them) and both ambient-scattering models in
+  // alternation. Each ratio is the median of the per-position ratios of two mappers' frames, so
+  // that it does not follow the machine's drifts.
+  std::vector<Bench::Timing> one;
   if (!modelsOnly)
   {
-    vtkTimes = b.Measure(vtkEA);
-    std::printf("bench frame_vtk_ea %.4f s\n", vtkTimes.second);
-    eaTimes = b.Measure(ea);
-    std::printf("bench frame_ea %.4f s\n", eaTimes.second);
-    aoTimes = b.Measure(ao);
-    std::printf("bench frame_ao %.4f s\n", aoTimes.second);
-    std::printf("bench first_frame_ao %.4f s\n", aoTimes.first);
-    as1Times = b.Measure(as1);
-    std::printf("bench frame_as1 %.4f s\n", as1Times.second);
-    std::printf("bench first_frame_as1 %.4f s\n", as1Times.first);
+    one = b.MeasureEach({ vtkEA, ea, ao, as1 });
+    std::printf("bench frame_vtk_ea %.4f s\n", one[0].Median);
+    std::printf("bench frame_ea %.4f s\n", one[1].Median);
+    std::printf("bench frame_ao %.4f s\n", one[2].Median);
+    std::printf("bench first_frame_ao %.4f s\n", one[2].First);
+    std::printf("bench frame_as1 %.4f s\n", one[3].Median);
+    std::printf("bench first_frame_as1 %.4f s\n", one[3].First);
   }
   b.SetLights(4);
-  // The two models, frame by frame in alternation (their ratio is the target).
-  const Bench::Pair models = b.MeasureInterleaved(as4, asx4);
-  const auto as4Times = models.A;
-  const auto asx4Times = models.B;
-  std::printf("bench frame_as4 %.4f s\n", as4Times.second);
-  std::printf("bench first_frame_as4 %.4f s\n", as4Times.first);
-  std::printf("bench frame_asx4 %.4f s\n", asx4Times.second);
-  std::printf("bench first_frame_asx4 %.4f s\n", asx4Times.first);
+  std::vector<Bench::Timing> four =
+    modelsOnly ? b.MeasureEach({ as4, asx4 }) : b.MeasureEach({ ea, as4, asx4 });
+  if (modelsOnly)
+  {
+    four.insert(four.begin(), Bench::Timing());
+  }
+  const double modelsRatio = Bench::RatioOf(four[1], four[2]);
+  std::printf("bench frame_as4 %.4f s\n", four[1].Median);
+  std::printf("bench first_frame_as4 %.4f s\n", four[1].First);
+  std::printf("bench frame_asx4 %.4f s\n", four[2].Median);
+  std::printf("bench first_frame_asx4 %.4f s\n", four[2].First);
+  if (framesOnly)
+  {
+    if (!modelsOnly)
+    {
+      std::printf("ratio ea_over_vtk_ea %.3f\n", Bench::RatioOf(one[0], one[1]));
+      std::printf("ratio as_over_ea %.3f\n", Bench::RatioOf(one[1], one[3]));
+      std::printf("ratio as4_over_ea %.3f\n", Bench::RatioOf(four[0], four[1]));
+      std::printf("ratio ao_over_ea %.3f\n", Bench::RatioOf(one[1], one[2]));
+    }
+    std::printf("ratio asx4_over_as4 %.3f\n", modelsRatio);
+    return 0;
+  }
 
   // Rebuilds with 4 lights, the two models in alternation: after each change (five
   // transfer-function changes, then five moves of one light) each model renders the frame that
@@ -637,16 +646,16 @@ int main(int argc, char* argv[])
 
   if (modelsOnly)
   {
-    std::printf("ratio asx4_over_as4 %.3f\n", models.Ratio);
+    std::printf("ratio asx4_over_as4 %.3f\n", modelsRatio);
     std::printf("ratio tf_rebuild_asx4_over_as4 %.3f\n", tfRebuildX / tfRebuild);
     return 0;
   }
-  std::printf("ratio ea_over_vtk_ea %.3f\n", eaTimes.second / vtkTimes.second);
-  std::printf("ratio as_over_ea %.3f\n", as1Times.second / eaTimes.second);
-  std::printf("ratio as4_over_ea %.3f\n", as4Times.second / eaTimes.second);
-  std::printf("ratio ao_over_ea %.3f\n", aoTimes.second / eaTimes.second);
-  std::printf("ratio tf_rebuild_over_ea_frame %.3f\n", tfRebuild / eaTimes.second);
-  std::printf("ratio asx4_over_as4 %.3f\n", models.Ratio);
+  std::printf("ratio ea_over_vtk_ea %.3f\n", Bench::RatioOf(one[0], one[1]));
+  std::printf("ratio as_over_ea %.3f\n", Bench::RatioOf(one[1], one[3]));
+  std::printf("ratio as4_over_ea %.3f\n", Bench::RatioOf(four[0], four[1]));
+  std::printf("ratio ao_over_ea %.3f\n", Bench::RatioOf(one[1], one[2]));
+  std::printf("ratio tf_rebuild_over_ea_frame %.3f\n", tfRebuild / four[0].Median);
+  std::printf("ratio asx4_over_as4 %.3f\n", modelsRatio);
   std::printf("ratio tf_rebuild_asx4_over_as4 %.3f\n", tfRebuildX / tfRebuild);
   if (!RunInteraction(b, lightGrid))
   {

@@ -215,17 +215,28 @@ void CastRay(const VolumeScene& scene,
       sigmaT = 0.0; // clipped or cropped away
     }
   };
-  // Ambient in-scattering from the ball around the sample x (eqs. 8.8-8.9), per unit of the
-  // transmittance and of the ray's length.
-  auto inscattered = [&](const Vec3& x)
+  // Where sample s reads its lights: with pairs (ScatteringParameters::LightsPerPair on the
+  // light grid) the midpoint of the samples 2m and 2m + 1 that hold s, for both (a last sample
+  // alone: half a step beyond it), else the sample itself; as the GPU reads them.
+  const bool pairs = mode == RenderMode::AmbientScattering &&
+    ScatteringParameters::LightsPerPair(p.SampleDistance, v.Averaged.Geometry);
+  auto lightPoint = [&](int s)
+  {
+    const double at = pairs ? (s - (s & 1)) + 1.0 : s + 0.5;
+    return o + d * (t0 + at * dt);
+  };
+  // Ambient in-scattering from the ball around the sample s (eqs. 8.8-8.9), per unit of the
+  // transmittance and of the ray's length: its sigma_t and colour, the lights at lightPoint(s).
+  auto inscattered = [&](int s)
   {
     double sigma;
     Vec3 color;
-    classify(x, sigma, color);
+    classify(o + d * (t0 + (s + 0.5) * dt), sigma, color);
     if (!(sigma > 0.0))
     {
       return Vec3{ 0, 0, 0 };
     }
+    const Vec3 x = lightPoint(s);
     // On the light grid, read trilinearly there as the light volumes are (the GPU reads it
     // with their texture coordinate).
     const double tau = p.AmbientRadius * SampleLocalClamped(v.Averaged, x);
@@ -248,7 +259,7 @@ void CastRay(const VolumeScene& scene,
     // them: T r before them is 1 (eq. 8.8 with the ray starting at the camera).
     for (int i = 0; i <= lag && i < n; ++i)
     {
-      L = L + inscattered(o + d * (t0 + (i + 0.5) * dt)) * dt;
+      L = L + inscattered(i) * dt;
     }
   }
   // The extended model's previous sample of phi along the ray (index -2: none).
@@ -293,21 +304,36 @@ void CastRay(const VolumeScene& scene,
       // what the P1 field scatters towards the camera, phi + g clamp(3 J.w, -phi, phi) with
       // 3 J.w = 3 D dphi/dt along the ray (the difference from the previous sample; 0 at the
       // first), as the exact integral over the step of a source constant on it.
+      // With pairs, phi is read at the pair's midpoint (lightPoint) and dphi/dt is the
+      // difference from the pair before, two steps back (0 at the ray's first pair).
       if (v.Diffuse.size() == 3 && sigmaT > 0.0)
       {
-        const Vec3 phi{ SampleLocalClamped(v.Diffuse[0], x),
-          SampleLocalClamped(v.Diffuse[1], x),
-          SampleLocalClamped(v.Diffuse[2], x) };
+        const Vec3 xl = lightPoint(i);
+        auto fluence = [&](const Vec3& at)
+        {
+          return Vec3{ SampleLocalClamped(v.Diffuse[0], at),
+            SampleLocalClamped(v.Diffuse[1], at),
+            SampleLocalClamped(v.Diffuse[2], at) };
+        };
+        const Vec3 phi = fluence(xl);
+        Vec3 slope{ 0, 0, 0 };
+        if (pairs && i >= 2)
+        {
+          slope = (phi - fluence(xl - d * (2.0 * dt))) * (1.0 / (2.0 * dt));
+        }
+        else if (!pairs && phiBeforeIndex == i - 1)
+        {
+          slope = (phi - phiBefore) * (1.0 / dt);
+        }
         const double d3 = 1.0 /
           std::max(
-            (1.0 - p.Albedo * p.Anisotropy) * SampleLocalClamped(v.Averaged, x), reducedFloor);
+            (1.0 - p.Albedo * p.Anisotropy) * SampleLocalClamped(v.Averaged, xl), reducedFloor);
         Vec3 scattered = phi;
         for (int ch = 0; ch < 3; ++ch)
         {
           // (phi itself, taken as at least 0: the relaxation may overshoot below 0 at vacuum)
           const double positive = std::max(0.0, phi[ch]);
-          const double slope = phiBeforeIndex == i - 1 ? (phi[ch] - phiBefore[ch]) / dt : 0.0;
-          scattered[ch] = positive + p.Anisotropy * std::clamp(d3 * slope, -positive, positive);
+          scattered[ch] = positive + p.Anisotropy * std::clamp(d3 * slope[ch], -positive, positive);
         }
         phiBefore = phi;
         phiBeforeIndex = i;
@@ -322,7 +348,7 @@ void CastRay(const VolumeScene& scene,
       if (i + lag + 1 < n)
       {
         const double lagged = T * ((1.0 - fraction) * extinction + fraction);
-        L = L + inscattered(o + d * (t + (lag + 1) * dt)) * (lagged * dt);
+        L = L + inscattered(i + lag + 1) * (lagged * dt);
       }
     }
     T *= extinction;

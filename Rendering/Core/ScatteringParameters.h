@@ -72,6 +72,18 @@ struct ScatteringParameters
     return 0.5 * std::min({ g.Spacing.x, g.Spacing.y, g.Spacing.z });
   }
 
+  /// Whether ambient scattering reads its lights (the light volumes, the averaged extinction,
+  /// the table and the extended model's fluence) once per pair of ray samples, at the pair's
+  /// midpoint, for both samples (ARCHITECTURE.md, "The lights once per pair of samples"): when two
+  /// steps of `sampleDistance` (a resolved SampleDistance) span at most one cell of the light grid
+  /// `lightGrid` along every axis, where the lights are interpolated linearly between its nodes.
+  static bool LightsPerPair(double sampleDistance, const GridGeometry& lightGrid)
+  {
+    const Vec3& s = lightGrid.Spacing;
+    return sampleDistance > 0.0 &&
+      2.0 * sampleDistance <= std::min({ s.x, s.y, s.z }) * (1.0 + 1e-9);
+  }
+
   /// A copy with automatic values filled in for grid g and values clamped into their ranges.
   ScatteringParameters Resolve(const GridGeometry& g) const
   {

@@ -319,7 +319,8 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
           frame.Lights,
           static_cast<int>(tx.TableSize[1]),
           layout,
-          packed ? lightCount : -1) +
+          packed ? lightCount : -1,
+          frame.LightsPerPair) +
           vtkAVSShaderOptions::ClipDefines(frame.Clip) +
           (blend ? vtkAVSShaderOptions::BlendDefines(frame.Blend) : std::string()) +
           (bricked ? "#define AVS_BRICKED\n" : "")))

@@ -170,6 +170,9 @@ public:
     avs::ClipRegion Clip;             ///< clipping planes and cropping, index frame
     vtkAVSShaderOptions::Blend Blend; ///< emission-absorption only
     std::array<int, 3> LightVolumeDimensions{ 1, 1, 1 };
+    /// Ambient scattering reads the lights once per pair of samples
+    /// (avs::ScatteringParameters::LightsPerPair).
+    bool LightsPerPair = false;
     /// The light grid covers the whole image of which the volume is a piece (distributed
     /// rendering): its samples and the piece's first sample in it.
     std::array<int, 3> WholeDimensions{ 1, 1, 1 };

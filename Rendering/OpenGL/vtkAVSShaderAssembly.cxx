@@ -13,15 +13,24 @@ namespace
 {
 // Splits an effect file into its declarations, its per-ray set-up (optional) and its
 // per-sample code, in that order.
-void SplitEffect(const std::string& text, std::string& dec, std::string& init, std::string& sample)
+void SplitEffect(const std::string& text,
+  std::string& dec,
+  std::string& init,
+  std::string& pair,
+  std::string& sample)
 {
   const std::string initMarker = "//AVS::Effect::Init";
+  const std::string pairMarker = "//AVS::Effect::Pair";
   const std::string sampleMarker = "//AVS::Effect::Sample";
   const std::size_t sampleAt = std::min(text.find(sampleMarker), text.size());
-  const std::size_t initAt = std::min(text.find(initMarker), sampleAt);
+  const std::size_t pairAt = std::min(text.find(pairMarker), sampleAt);
+  const std::size_t initAt = std::min(text.find(initMarker), pairAt);
   dec = text.substr(0, initAt);
-  init = initAt < sampleAt
-    ? text.substr(initAt + initMarker.size(), sampleAt - initAt - initMarker.size())
+  init = initAt < pairAt
+    ? text.substr(initAt + initMarker.size(), pairAt - initAt - initMarker.size())
+    : std::string();
+  pair = pairAt < sampleAt
+    ? text.substr(pairAt + pairMarker.size(), sampleAt - pairAt - pairMarker.size())
     : std::string();
   sample = sampleAt < text.size() ? text.substr(sampleAt + sampleMarker.size()) : std::string();
 }
@@ -41,7 +50,8 @@ std::string vtkAVSShaderAssembly::RayCastDefines(avs::RenderMode mode,
   const std::vector<avs::Light>& lights,
   int tauNodes,
   const vtkAVSClassification::Layout& layout,
-  int averagedSlot)
+  int averagedSlot,
+  bool lightsPerPair)
 {
   // The classification's choices (avs_classify.glsl).
   std::string defines = layout.Defines();
@@ -102,6 +112,10 @@ std::string vtkAVSShaderAssembly::RayCastDefines(avs::RenderMode mode,
   {
     defines += "#define AVS_EMISSION\n";
   }
+  if (lightsPerPair)
+  {
+    defines += "#define AVS_LIGHTS_PER_PAIR\n";
+  }
   // Directional lights read A from a per-ray column of the table (see avs_as_effect.glsl) when
   // the table's tau axis is short enough to keep one column per light.
   if (positional != (1 << n) - 1 && tauNodes >= 2 && tauNodes <= vtkAVSRayCaster::MaximumTauNodes)
@@ -120,14 +134,15 @@ std::string vtkAVSShaderAssembly::RayCastFragmentShader(avs::RenderMode mode,
   std::string effect = mode == avs::RenderMode::EmissionAbsorption
     ? (blend ? avs_blend_effect : avs_ea_effect)
     : (mode == avs::RenderMode::AmbientOcclusion ? avs_ao_effect : avs_as_effect);
-  std::string dec, init, sample;
-  SplitEffect(effect, dec, init, sample);
+  std::string dec, init, pair, sample;
+  SplitEffect(effect, dec, init, pair, sample);
   // The compile-time choices go before the first snippet that may test them.
   Replace(fs, "//AVS::Classify::Dec", defines + avs_classify);
   Replace(fs, "//AVS::Lights::Dec", avs_lights);
   Replace(fs, "//AVS::Clip::Dec", avs_clip);
   Replace(fs, "//AVS::Effect::Dec", dec);
   Replace(fs, "//AVS::Effect::Init", init);
+  Replace(fs, "//AVS::Effect::Pair", pair);
   Replace(fs, "//AVS::Effect::Sample", sample);
   return fs;
 }

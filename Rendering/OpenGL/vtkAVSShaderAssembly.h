@@ -30,14 +30,16 @@ public:
   /// look-ahead), the diffuse fluence, the light textures to fetch, emission and the per-ray table
   /// columns of directional lights (`tauNodes`: the table slice's tau axis), and where the
   /// averaged extinction is read (`averagedSlot`: the light-texture slot that holds a copy of
-  /// it, vtkAVSVolumeTextures::AveragedSlot, or -1 for its own texture). One program per
-  /// combination.
+  /// it, vtkAVSVolumeTextures::AveragedSlot, or -1 for its own texture), and whether the lights
+  /// are read once per pair of samples (`lightsPerPair`, avs::ScatteringParameters::LightsPerPair).
+  /// One program per combination.
   static std::string RayCastDefines(avs::RenderMode mode,
     const avs::ScatteringParameters& parameters,
     const std::vector<avs::Light>& lights,
     int tauNodes,
     const vtkAVSClassification::Layout& layout,
-    int averagedSlot = -1);
+    int averagedSlot = -1,
+    bool lightsPerPair = false);
   /// The ray-casting fragment shader of `mode` with `defines` (RayCastDefines, the clipping's and
   /// the blend mode's); a blend mode other than composite (AVS_BLEND) takes the blend effect.
   static std::string RayCastFragmentShader(avs::RenderMode mode, const std::string& defines);

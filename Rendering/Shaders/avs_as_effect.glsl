@@ -15,6 +15,11 @@
 // this sum. AVS_LIGHT_TEXTURES (0-2) says how many light-volume textures the lights need;
 // AVS_EMISSION is defined when the emission term is not zero. The choices are compile-time
 // because a software rasterizer runs every branch of a shader whatever its condition.
+// AVS_LIGHTS_PER_PAIR (ScatteringParameters::LightsPerPair: two steps span at most one cell of
+// the light grid) reads the lights once per pair of samples of the unsplit ray, at the pair's
+// midpoint, for both of them (ARCHITECTURE.md, "The lights once per pair of samples"); with the
+// ring the ray caster then takes two samples per iteration (AVS_SAMPLE_PAIRS) and the pair's
+// snippet reads them. The CPU reference reads them at the same points.
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 #define AVS_EFFECT_TERMINATION
 #endif
@@ -33,9 +38,10 @@ uniform float u_anisotropy;
 uniform float u_reducedFloor; // 1 / the flux limiter's transport length
 vec3 g_phi;
 float g_averaged;
-// The previous sample's phi and its index (-2: none), for phi's derivative along the ray.
+// The previous sample's (or pair's) phi and its index (-100: none), for phi's derivative along
+// the ray.
 vec3 g_phiBefore = vec3(0.0);
-int g_phiBeforeIndex = -2;
+int g_phiBeforeIndex = -100;
 #elif !defined(AVS_AVERAGED_SLOT)
 uniform sampler3D u_averagedExtinction;
 #endif
@@ -58,16 +64,21 @@ uniform float u_albedo;
 uniform float u_ambientRadius;
 uniform float u_emissionWeight;
 #ifdef AVS_DIFFUSE
-// What the sample i scatters towards the camera of the diffuse field (DiffuseFluence.h,
-// ScatteredFluence): phi + g clamp(3 J.w, -phi, phi), J.w = D dphi/dt along the ray.
+// What the diffuse field scatters towards the camera (DiffuseFluence.h, ScatteredFluence):
+// phi + g clamp(3 J.w, -phi, phi), J.w = D dphi/dt along the ray, dphi/dt = slope.
+vec3 ScatteredFluenceOf(vec3 phi, float averaged, vec3 slope)
+{
+  float d3 = 1.0 / max((1.0 - u_albedo * u_anisotropy) * averaged, u_reducedFloor);
+  vec3 positive = max(phi, vec3(0.0)); // the relaxation may overshoot below 0 at vacuum
+  return positive + u_anisotropy * clamp(d3 * slope, -positive, positive);
+}
+// ... of the sample i, dphi/dt from the previous sample that read phi (0 if it was not i - 1).
 vec3 ScatteredFluence(vec3 phi, float averaged, int i, float dt)
 {
   vec3 slope = g_phiBeforeIndex == i - 1 ? (phi - g_phiBefore) / dt : vec3(0.0);
   g_phiBefore = phi;
   g_phiBeforeIndex = i;
-  float d3 = 1.0 / max((1.0 - u_albedo * u_anisotropy) * averaged, u_reducedFloor);
-  vec3 positive = max(phi, vec3(0.0)); // the relaxation may overshoot below 0 at vacuum
-  return positive + u_anisotropy * clamp(d3 * slope, -positive, positive);
+  return ScatteredFluenceOf(phi, averaged, slope);
 }
 #endif
 
@@ -165,9 +176,10 @@ vec3 LightInScattering(int j, vec3 world, vec3 direction, float tube, float v)
   return irradiance * (tube * InScattering(u, v));
 }
 
-// sigma_t(x') c(x') sum_j E_j(x') A(theta_j; r sigma~_t(x')) at the continuous voxel index x'
-// (world position `world`) for a ray along `direction`, with `classified` = (c, sigma_t).
-vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified)
+// sum_j E_j(x) A(theta_j; r sigma~_t(x)) at the continuous voxel index x (world position
+// `world`) for a ray along `direction`; the extended model also leaves phi and sigma~_t there in
+// g_phi and g_averaged.
+vec3 LightSum(vec3 index, vec3 world, vec3 direction)
 {
   // The averaged sigma_t and the tube transmittances of all lights at x' (light grid), four
   // lights to a texture fetch.
@@ -196,8 +208,38 @@ vec3 InScattered(vec3 index, vec3 world, vec3 direction, vec4 classified)
   vec3 inscatter = vec3(0.0);
 #define AVS_ADD_LIGHT(j) inscatter += LightInScattering(j, world, direction, Tube(j, tubes0, tubes1), v);
   AVS_FOR_EACH_LIGHT(AVS_ADD_LIGHT)
-  return classified.a * classified.rgb * inscatter;
+  return inscatter;
 }
+
+// The ray parameter at which sample s (of this ray; brickFirst + s of the unsplit one) reads its
+// lights: with AVS_LIGHTS_PER_PAIR the midpoint of its pair of the unsplit ray's samples
+// (2m, 2m + 1), else the sample itself.
+int g_parity = 0; // the unsplit ray's index of sample 0, modulo 2
+float LightT(int s)
+{
+#ifdef AVS_LIGHTS_PER_PAIR
+  return t0 + (float(s - ((s + g_parity) & 1)) + 0.5 + offset) * dtWorld;
+#else
+  return t0 + (float(s) + offset) * dtWorld;
+#endif
+}
+
+// sigma_t(x') c(x') sum_j E_j A(theta_j; r sigma~_t) for `classified` = (c, sigma_t) at x', the
+// lights read at the ray parameter tl (LightT).
+vec3 InScattered(vec4 classified, float tl)
+{
+  return classified.a * classified.rgb * LightSum(io + tl * id, origin + tl * direction, direction);
+}
+
+#ifdef AVS_LIGHTS_PER_PAIR
+#ifndef AVS_LOOKAHEAD_EXPLICIT
+#define AVS_SAMPLE_PAIRS
+#endif
+vec3 g_pairLight; // the current pair's light sum (AVS_SAMPLE_PAIRS)
+#ifdef AVS_DIFFUSE
+vec3 g_pairFluence; // and what its diffuse field scatters towards the camera
+#endif
+#endif
 
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 bool EffectContinues(float T, int i)
@@ -220,7 +262,21 @@ bool EffectContinues(float T, int i)
   g_tableOffset = 0.5 / u_tableSize;
   g_tauScale = 1.0 / log(1.0 + u_tableTauMaximum);
 #ifdef AVS_DIFFUSE
-  g_phiBeforeIndex = -2; // per ray (a fragment may cast several: the image sample distance)
+  // None yet: per ray (a fragment may cast several: the image sample distance).
+  g_phiBeforeIndex = -100;
+#endif
+#ifdef AVS_BRICKED
+  g_parity = brickFirst & 1;
+#endif
+#if defined(AVS_SAMPLE_PAIRS) && defined(AVS_DIFFUSE) && defined(AVS_BRICKED)
+  // A brick's first pair takes dphi/dt from the unsplit ray's pair before it (in the bricks in
+  // front), as the unsplit ray does.
+  if (brickFirst - g_parity >= 2)
+  {
+    float tb = LightT(-g_parity) - 2.0 * dtWorld;
+    g_phiBefore = textureLod(u_diffuse, (io + tb * id) * g_lightScale + g_lightOffset, 0.0).rgb;
+    g_phiBeforeIndex = -g_parity - 2;
+  }
 #endif
 #define AVS_THETA_COORDINATE(j) g_thetaCoordinate[j] = ThetaCoordinate(dot(u_lightAxis[j], -direction));
   AVS_FOR_EACH_LIGHT(AVS_THETA_COORDINATE)
@@ -253,6 +309,22 @@ bool EffectContinues(float T, int i)
     g_before = behind;
   }
 #endif
+//AVS::Effect::Pair
+#ifdef AVS_SAMPLE_PAIRS
+    {
+      // The lights of the samples pair and pair + 1, read once at their midpoint.
+      float tp = LightT(max(pair, 0));
+      g_pairLight = LightSum(io + tp * id, origin + tp * direction, direction);
+#ifdef AVS_DIFFUSE
+      // dphi/dt from the pair before (two steps back; 0 at the ray's first pair).
+      vec3 slope =
+        g_phiBeforeIndex == pair - 2 ? (g_phi - g_phiBefore) / (2.0 * dt) : vec3(0.0);
+      g_phiBefore = g_phi;
+      g_phiBeforeIndex = pair;
+      g_pairFluence = ScatteredFluenceOf(g_phi, g_averaged, slope);
+#endif
+    }
+#endif
 //AVS::Effect::Sample
 #if defined(AVS_DIFFUSE) && defined(AVS_LOOKAHEAD_EXPLICIT)
     // The extended model's diffuse light at the sample itself: albedo c phi / (4 pi) per unit
@@ -260,8 +332,17 @@ bool EffectContinues(float T, int i)
     // ring, below, from the fetch of the sample's own InScattered.)
     if (here.a > 0.0 && T >= u_termination)
     {
-      vec4 diffuse = textureLod(u_diffuse, index * g_lightScale + g_lightOffset, 0.0);
+      float tl = LightT(i);
+      vec4 diffuse = textureLod(u_diffuse, (io + tl * id) * g_lightScale + g_lightOffset, 0.0);
+#ifdef AVS_LIGHTS_PER_PAIR
+      // dphi/dt from the pair before, two steps back (none before the unsplit ray's first).
+      vec3 before = textureLod(
+        u_diffuse, (io + (tl - 2.0 * dtWorld) * id) * g_lightScale + g_lightOffset, 0.0).rgb;
+      vec3 slope = i + g_parity >= 2 ? (diffuse.rgb - before) / (2.0 * dt) : vec3(0.0);
+      vec3 phi = ScatteredFluenceOf(diffuse.rgb, diffuse.a, slope);
+#else
       vec3 phi = ScatteredFluence(diffuse.rgb, diffuse.a, i, dt);
+#endif
       L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * here.rgb * phi;
     }
 #endif
@@ -281,15 +362,23 @@ bool EffectContinues(float T, int i)
     if (here.a > 0.0 && older >= u_termination)
     {
       float lagged = mix(newer, older, g_lagFraction);
-      L += lagged * dt *
-        InScattered(index, origin + t * direction, direction, here);
+#ifdef AVS_SAMPLE_PAIRS
+      L += lagged * dt * here.a * here.rgb * g_pairLight;
+#else
+      L += lagged * dt * InScattered(here, t);
+#endif
 #ifdef AVS_DIFFUSE
       // The extended model's diffuse light at the sample itself (T <= older: every sample
-      // that adds it passed the test above), phi from the InScattered just now.
+      // that adds it passed the test above), phi from the pair's snippet or from the
+      // InScattered just now.
       if (T >= u_termination)
       {
-        L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * here.rgb *
-          ScatteredFluence(g_phi, g_averaged, i, dt);
+#ifdef AVS_SAMPLE_PAIRS
+        vec3 scattered = g_pairFluence;
+#else
+        vec3 scattered = ScatteredFluence(g_phi, g_averaged, i, dt);
+#endif
+        L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * here.rgb * scattered;
       }
 #endif
     }
@@ -308,7 +397,7 @@ bool EffectContinues(float T, int i)
         AVS_CROP(s1, first);
         if (s1.a > 0.0)
         {
-          L += dt * InScattered(first, origin + tj * direction, direction, s1);
+          L += dt * InScattered(s1, LightT(j));
         }
       }
     }
@@ -324,7 +413,7 @@ bool EffectContinues(float T, int i)
       AVS_CROP(s2, ahead);
       if (s2.a > 0.0)
       {
-        L += lagged * dt * InScattered(ahead, origin + ta * direction, direction, s2);
+        L += lagged * dt * InScattered(s2, LightT(i + g_lag + 1));
       }
     }
 #endif

@@ -71,6 +71,19 @@ vec3 VolumeCoordinate(vec3 index)
 }
 #endif
 
+// The ray's values, shared by main and RaySample (a function, so that a loop may take two
+// samples per iteration without a second copy of the sample's code).
+vec3 origin, direction; // world ray
+vec3 io, id;            // index(t) = io + t * id for world distance t
+float t0, dtWorld, dt, offset;
+int steps;
+#ifdef AVS_BRICKED
+int brickFirst;
+#endif
+vec3 firstCoordinate, stepCoordinate;
+vec3 L;  // radiance so far
+float T; // transmittance so far
+
 //AVS::Effect::Dec
 
 float Hash(vec2 p)
@@ -78,22 +91,39 @@ float Hash(vec2 p)
   return fract(sin(dot(p, vec2(12.9898, 78.233))) * 43758.5453);
 }
 
+// Sample i of the ray: its classification, the effect's light and the transmittance.
+void RaySample(int i)
+{
+  float t = t0 + (float(i) + offset) * dtWorld;
+  vec3 index = io + t * id;
+  vec3 coordinate = firstCoordinate + float(i) * stepCoordinate;
+  vec4 voxel = textureLod(AVS_VOLUME_TEXTURE, coordinate, 0.0);
+  vec4 here = Classify(voxel, coordinate);
+  AVS_CROP(here, index);
+  float extinction = exp(-here.a * dt);
+  //AVS::Effect::Sample
+#ifndef AVS_EFFECT_KEEPS_TRANSMITTANCE
+  if (T >= u_termination)
+    T *= extinction;
+#endif
+}
+
 void main()
 {
   vec2 ndc = texCoord * 2.0 - 1.0;
   vec4 nearPoint = u_ndcToWorld * vec4(ndc, -1.0, 1.0);
   vec4 farPoint = u_ndcToWorld * vec4(ndc, 1.0, 1.0);
-  vec3 origin = nearPoint.xyz / nearPoint.w;
-  vec3 direction = normalize(farPoint.xyz / farPoint.w - origin);
+  origin = nearPoint.xyz / nearPoint.w;
+  direction = normalize(farPoint.xyz / farPoint.w - origin);
 
   // The ray in index space: index(t) = io + t * id for world distance t.
-  vec3 io = (u_worldToIndex * vec4(origin, 1.0)).xyz;
-  vec3 id = (u_worldToIndex * vec4(direction, 0.0)).xyz;
+  io = (u_worldToIndex * vec4(origin, 1.0)).xyz;
+  id = (u_worldToIndex * vec4(direction, 0.0)).xyz;
   vec3 lo = (-u_border - io) / id;
   vec3 hi = (u_dimensions - 1.0 + u_border - io) / id;
   vec3 tmin = min(lo, hi);
   vec3 tmax = max(lo, hi);
-  float t0 = max(max(max(tmin.x, tmin.y), tmin.z), 0.0);
+  t0 = max(max(max(tmin.x, tmin.y), tmin.z), 0.0);
   float t1 = min(min(tmax.x, tmax.y), tmax.z);
 
   // Opaque geometry drawn before ends the ray.
@@ -116,10 +146,10 @@ void main()
   }
   // Steps of at most the sample distance in data units; dtWorld along the world ray.
   float dataPerWorld = length(id * u_spacing);
-  int steps = max(1, int(ceil((t1 - t0) * dataPerWorld / u_sampleDistance - 1e-4)));
-  float dtWorld = (t1 - t0) / float(steps);
-  float dt = dtWorld * dataPerWorld;
-  float offset = u_jitter == 1 ? Hash(gl_FragCoord.xy) : 0.5;
+  steps = max(1, int(ceil((t1 - t0) * dataPerWorld / u_sampleDistance - 1e-4)));
+  dtWorld = (t1 - t0) / float(steps);
+  dt = dtWorld * dataPerWorld;
+  offset = u_jitter == 1 ? Hash(gl_FragCoord.xy) : 0.5;
 #ifdef AVS_BRICKED
   // The samples t0 + (i + offset) dtWorld of the unsplit ray in the brick's owned box: i in
   // [brickFirst, brickLast). Neighbouring bricks compute their shared face's crossing from the
@@ -131,7 +161,7 @@ void main()
   vec3 bmax = max(blo, bhi);
   float b0 = max(max(bmin.x, bmin.y), bmin.z);
   float b1 = min(min(bmax.x, bmax.y), bmax.z);
-  int brickFirst = int(clamp(ceil((b0 - t0) / dtWorld - offset), 0.0, float(steps)));
+  brickFirst = int(clamp(ceil((b0 - t0) / dtWorld - offset), 0.0, float(steps)));
   int brickLast = int(clamp(ceil((b1 - t0) / dtWorld - offset), 0.0, float(steps)));
   if (brickLast <= brickFirst)
   {
@@ -140,19 +170,43 @@ void main()
   t0 += float(brickFirst) * dtWorld;
   steps = brickLast - brickFirst;
   vec3 inverseDimensions = 1.0 / u_brickDimensions;
-  vec3 firstCoordinate = VolumeCoordinate(io + (t0 + offset * dtWorld) * id);
+  firstCoordinate = VolumeCoordinate(io + (t0 + offset * dtWorld) * id);
 #else
   // Per-ray constants: the volume texture coordinate of sample i is first + i * step (texel
   // centres on the voxels), and the transfer-function coordinates are affine in the scalar.
   vec3 inverseDimensions = 1.0 / u_dimensions;
-  vec3 firstCoordinate = (io + (t0 + offset * dtWorld) * id + 0.5) * inverseDimensions;
+  firstCoordinate = (io + (t0 + offset * dtWorld) * id + 0.5) * inverseDimensions;
 #endif
-  vec3 stepCoordinate = dtWorld * id * inverseDimensions;
+  stepCoordinate = dtWorld * id * inverseDimensions;
 
+  L = vec3(0.0);
+  T = 1.0;
   //AVS::Effect::Init
 
-  vec3 L = vec3(0.0);
-  float T = 1.0;
+#ifdef AVS_SAMPLE_PAIRS
+  // Two samples per iteration, which share the effect's per-pair work (its Pair snippet): the
+  // unsplit ray's samples 2m and 2m + 1 (a brick that starts at an odd one starts with the
+  // second of its pair).
+#ifdef AVS_BRICKED
+  int firstPair = -(brickFirst & 1);
+#else
+  int firstPair = 0;
+#endif
+  for (int pair = firstPair; pair < steps; pair += 2)
+  {
+    if (!EffectContinues(T, max(pair, 0)))
+      break;
+    //AVS::Effect::Pair
+    if (pair >= 0)
+    {
+      RaySample(pair);
+    }
+    if (pair + 1 < steps && EffectContinues(T, pair + 1))
+    {
+      RaySample(pair + 1);
+    }
+  }
+#else
   for (int i = 0; i < steps; ++i)
   {
 #ifdef AVS_EFFECT_TERMINATION
@@ -163,19 +217,9 @@ void main()
     if (T < u_termination)
       break;
 #endif
-    float t = t0 + (float(i) + offset) * dtWorld;
-    vec3 index = io + t * id;
-    vec3 coordinate = firstCoordinate + float(i) * stepCoordinate;
-    vec4 voxel = textureLod(AVS_VOLUME_TEXTURE, coordinate, 0.0);
-    vec4 here = Classify(voxel, coordinate);
-    AVS_CROP(here, index);
-    float extinction = exp(-here.a * dt);
-    //AVS::Effect::Sample
-#ifndef AVS_EFFECT_KEEPS_TRANSMITTANCE
-    if (T >= u_termination)
-      T *= extinction;
-#endif
+    RaySample(i);
   }
+#endif
 #ifdef AVS_EFFECT_OUTPUT
   gl_FragData[0] = EffectOutput(L, T);
 #else

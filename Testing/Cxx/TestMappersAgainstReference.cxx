@@ -7,7 +7,8 @@
 // ambient radius too large for the ring buffer (the explicit look-ahead). Ambient scattering in
 // both models: the paper's and the extended one (its diffusion solve on the CPU, its extra
 // per-sample term in the shader), which must also be brighter than the paper's. Metric: PSNR
-// over the RGB picture; threshold 35 dB.
+// over the RGB picture; threshold 35 dB, and 55 dB for ambient scattering in the first three
+// views, where it reads its lights once per pair of samples (as the reference must too).
 #include "MapperTestScene.h"
 #include "TestErrorObserver.h"
 
@@ -181,6 +182,13 @@ int main(int argc, char* argv[])
       }
       AVS_CHECK(Brightness(gpu) > 1000.0);
       AVS_CHECK(psnr >= 35.0);
+      if (m >= 2 && view < 3)
+      {
+        // Ambient scattering reads its lights once per pair of samples here (their midpoint;
+        // ScatteringParameters::LightsPerPair): read at the samples themselves instead, the
+        // reference differs by 50-54 dB.
+        AVS_CHECK(psnr >= 55.0);
+      }
       if (m == 2)
       {
         paperBrightness = Brightness(gpu);
