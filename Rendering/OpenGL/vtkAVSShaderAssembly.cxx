@@ -11,8 +11,8 @@
 
 namespace
 {
-// Splits an effect file into its declarations, its per-ray set-up (optional) and its
-// per-sample code, in that order.
+// Splits an effect file into its declarations, its per-ray set-up (optional), its per-pair code
+// (optional; avs_raycast_fs.glsl, AVS_SAMPLE_PAIRS) and its per-sample code, in that order.
 void SplitEffect(const std::string& text,
   std::string& dec,
   std::string& init,

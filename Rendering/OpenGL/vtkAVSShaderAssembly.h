@@ -5,7 +5,8 @@
  * The ray-casting fragment shader is avs_raycast_fs.glsl with the classification
  * (avs_classify.glsl), the lights (avs_lights.glsl), the clipping (avs_clip.glsl) and one effect
  * file (avs_ea_effect.glsl, avs_blend_effect.glsl, avs_ao_effect.glsl or avs_as_effect.glsl,
- * split at its //AVS::Effect::Init and //AVS::Effect::Sample markers) put in at its markers,
+ * split at its //AVS::Effect::Init, //AVS::Effect::Pair and //AVS::Effect::Sample markers) put
+ * in at its markers,
  * after the frame's compile-time choices (RayCastDefines). The compute passes' sources get their
  * defines after the #version line; the averaged-extinction pass gets the same classification and
  * clipping snippets as the ray caster, so the two cannot drift apart.

@@ -32,7 +32,8 @@
 #ifdef AVS_DIFFUSE
 // The extended model (ARCHITECTURE.md, "Beyond the paper"): the diffuse fluence phi (RGB) of
 // the diffusion solve (Core/DiffuseFluence.h), interpolated onto the light grid, with the
-// averaged sigma_t in alpha; the ring's samples keep the phi their InScattered read.
+// averaged sigma_t in alpha; the ring's samples keep the phi their InScattered (with pairs: the
+// pair's snippet) read.
 uniform sampler3D u_diffuse;
 uniform float u_anisotropy;
 uniform float u_reducedFloor; // 1 / the flux limiter's transport length
@@ -338,7 +339,12 @@ bool EffectContinues(float T, int i)
       // dphi/dt from the pair before, two steps back (none before the unsplit ray's first).
       vec3 before = textureLod(
         u_diffuse, (io + (tl - 2.0 * dtWorld) * id) * g_lightScale + g_lightOffset, 0.0).rgb;
-      vec3 slope = i + g_parity >= 2 ? (diffuse.rgb - before) / (2.0 * dt) : vec3(0.0);
+#ifdef AVS_BRICKED
+      bool afterFirstPair = brickFirst + i >= 2; // the unsplit ray's index
+#else
+      bool afterFirstPair = i >= 2;
+#endif
+      vec3 slope = afterFirstPair ? (diffuse.rgb - before) / (2.0 * dt) : vec3(0.0);
       vec3 phi = ScatteredFluenceOf(diffuse.rgb, diffuse.a, slope);
 #else
       vec3 phi = ScatteredFluence(diffuse.rgb, diffuse.a, i, dt);

@@ -2,11 +2,14 @@
 // Ray casting framework of the three mappers (ALGORITHM.md sections 2, 6 and 7): one ray per
 // pixel from the inverse view-projection (camera inside the volume and parallel projection
 // included), clipped to the volume box and to the opaque geometry's depth, marched front to back
-// in equal steps, with the mapper's effect snippet (declarations, per-ray set-up and per-sample
-// code) put in at the three effect markers below. Each sample fetches one texel of the volume
+// in equal steps, with the mapper's effect snippet (declarations, per-ray set-up, per-pair and
+// per-sample code) put in at the four effect markers below. Each sample (RaySample) fetches one
+// texel of the volume
 // texture (AVS_VOLUME_TEXTURE: the scalars, or ambient scattering's texture that holds them
 // beside the averaged extinction) and classifies it (avs_classify.glsl). An effect may define
 // AVS_EFFECT_TERMINATION (then its bool EffectContinues(float T, int i) ends the ray),
+// AVS_SAMPLE_PAIRS (with EffectContinues: the loop takes two samples per iteration, after the
+// effect's per-pair code, which sees the pair's first index `pair`),
 // AVS_EFFECT_KEEPS_TRANSMITTANCE (then it updates T itself, as the blend modes other than
 // composite do) and AVS_EFFECT_OUTPUT (then vec4 EffectOutput(vec3 L, float T) gives the
 // premultiplied pixel). The CPU reference (Rendering/Core/ReferenceRenderer.cxx) computes the
@@ -201,8 +204,12 @@ void main()
     {
       RaySample(pair);
     }
-    if (pair + 1 < steps && EffectContinues(T, pair + 1))
+    if (pair + 1 < steps)
     {
+      // (ends the ray as the single loop does: with a look-ahead of 0 steps the next test
+      // reads this sample's ring entry)
+      if (!EffectContinues(T, pair + 1))
+        break;
       RaySample(pair + 1);
     }
   }

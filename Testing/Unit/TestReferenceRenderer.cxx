@@ -255,3 +255,20 @@ TEST(ReferenceRenderer, PrecomputeRejectsAVolumeWithoutScalars)
     &error));
   EXPECT_NE(error.find("table"), std::string::npos);
 }
+
+TEST(ReferenceRenderer, LightsPerPairWhenTwoStepsSpanAtMostOneLightCell)
+{
+  GridGeometry light;
+  light.Dimensions = { 40, 40, 40 };
+  light.Spacing = { 0.05, 0.05, 0.06 };
+  EXPECT_TRUE(ScatteringParameters::LightsPerPair(0.02, light));
+  EXPECT_TRUE(ScatteringParameters::LightsPerPair(0.025, light)); // two steps: one cell
+  EXPECT_FALSE(ScatteringParameters::LightsPerPair(0.03, light));
+  EXPECT_FALSE(ScatteringParameters::LightsPerPair(0.0, light));
+  // The automatic step on the data's own grid: always in pairs.
+  const GridGeometry data = light;
+  EXPECT_TRUE(ScatteringParameters::LightsPerPair(
+    ScatteringParameters().Resolve(data).SampleDistance, data.Capped(128)));
+  EXPECT_TRUE(ScatteringParameters::LightsPerPair(
+    ScatteringParameters().Resolve(data).SampleDistance, data.Capped(16)));
+}
