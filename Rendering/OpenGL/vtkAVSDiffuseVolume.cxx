@@ -59,7 +59,13 @@ bool vtkAVSDiffuseVolume::Allocate(vtkOpenGLRenderWindow* window,
   const float* data,
   std::string& error)
 {
-  if (!vtkAVSTextureUpload::UploadFloats(window, texture, d, 4, data, GL_RGBA32F, {}, error))
+  std::vector<vtkTextureObject*> held =
+    this->OtherTextures ? this->OtherTextures() : std::vector<vtkTextureObject*>();
+  for (vtkTextureObject* t : this->GetTextures())
+  {
+    held.push_back(t); // (the one replaced is left out by the budget)
+  }
+  if (!vtkAVSTextureUpload::UploadFloats(window, texture, d, 4, data, GL_RGBA32F, held, error))
   {
     error = "the diffuse-fluence texture: " + error;
     return false;
@@ -270,13 +276,22 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
 
 double vtkAVSDiffuseVolume::HeldBytes() const
 {
-  double bytes = vtkAVSTextureMemory::Bytes(this->Texture) +
-    vtkAVSTextureMemory::Bytes(this->Fluence) + vtkAVSTextureMemory::Bytes(this->Source);
-  for (vtkTextureObject* t : this->Coarser)
+  double bytes = 0.0;
+  for (vtkTextureObject* t : this->GetTextures())
   {
     bytes += vtkAVSTextureMemory::Bytes(t);
   }
   return bytes;
+}
+
+std::vector<vtkTextureObject*> vtkAVSDiffuseVolume::GetTextures() const
+{
+  std::vector<vtkTextureObject*> textures = { this->Texture, this->Fluence, this->Source };
+  for (vtkTextureObject* t : this->Coarser)
+  {
+    textures.push_back(t);
+  }
+  return textures;
 }
 
 void vtkAVSDiffuseVolume::Bind(vtkShaderProgram* program, const avs::ScatteringParameters& p)

@@ -19,6 +19,7 @@
 #include "vtkSmartPointer.h"
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,11 @@ public:
   /// The bytes of its textures (vtkAVSTextureMemory): the packed texture, and after a GPU solve
   /// phi and q on every level, kept for the next solve.
   double HeldBytes() const;
+  /// Its 3D textures now (the GPU memory budget counts them with the volume's).
+  std::vector<vtkTextureObject*> GetTextures() const;
+  /// The other 3D textures of its volume (vtkAVSVolumeTextures::VolumeTextures), which the GPU
+  /// memory budget counts beside its own when it allocates (set by vtkAVSRayCaster).
+  std::function<std::vector<vtkTextureObject*>()> OtherTextures;
   /// Whether a fluence is uploaded.
   bool IsReady() const { return this->Texture != nullptr; }
   /// Activates the texture and sets the program's u_diffuse, u_anisotropy and u_reducedFloor
@@ -71,8 +77,8 @@ public:
 
 private:
   /// An RGBA float texture of dimensions d, from `data` (null: undefined, for the GPU solve),
-  /// through vtkAVSTextureUpload.
-  static bool Allocate(vtkOpenGLRenderWindow* window,
+  /// through vtkAVSTextureUpload, within the GPU memory budget of everything the volume holds.
+  bool Allocate(vtkOpenGLRenderWindow* window,
     vtkSmartPointer<vtkTextureObject>& texture,
     const std::array<int, 3>& d,
     const float* data,

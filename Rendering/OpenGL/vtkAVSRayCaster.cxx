@@ -18,7 +18,12 @@
 #include <algorithm>
 #include <cmath>
 
-vtkAVSRayCaster::vtkAVSRayCaster() = default;
+vtkAVSRayCaster::vtkAVSRayCaster()
+{
+  // One GPU memory budget for all of the volume's 3D textures.
+  this->Textures.OtherTextures = [this]() { return this->Diffuse.GetTextures(); };
+  this->Diffuse.OtherTextures = [this]() { return this->Textures.VolumeTextures(); };
+}
 
 vtkAVSRayCaster::~vtkAVSRayCaster()
 {

@@ -120,7 +120,7 @@ bool vtkAVSVolumeTextures::UploadGrid(vtkSmartPointer<vtkTextureObject>& texture
   unsigned int internalFormat)
 {
   if (!vtkAVSTextureUpload::UploadFloats(
-        this->Window, texture, d, components, data, internalFormat, this->VolumeTextures(), error))
+        this->Window, texture, d, components, data, internalFormat, this->BudgetTextures(), error))
   {
     return false;
   }
@@ -342,7 +342,7 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
         channels,
         format,
         fill,
-        this->VolumeTextures(),
+        this->BudgetTextures(),
         error))
   {
     return false;
@@ -396,7 +396,7 @@ bool vtkAVSVolumeTextures::UploadBricks(const avs::VolumeScene& scene,
           channels,
           format,
           fill,
-          this->VolumeTextures(),
+          this->BudgetTextures(),
           error))
     {
       error = "brick " + std::to_string(b + 1) + " of " + std::to_string(bricks.size()) + " (" +
@@ -412,7 +412,7 @@ bool vtkAVSVolumeTextures::UploadBricks(const avs::VolumeScene& scene,
 bool vtkAVSVolumeTextures::UploadClassification(const avs::VolumeScene& scene, std::string& error)
 {
   this->Classification.SetWindow(this->Window);
-  std::vector<vtkTextureObject*> held = this->VolumeTextures();
+  std::vector<vtkTextureObject*> held = this->BudgetTextures();
   held.resize(held.size() - this->Classification.VolumeTextures().size()); // counted by it
   if (!this->Classification.Upload(scene, held, this->Bricks, error))
   {
@@ -421,6 +421,17 @@ bool vtkAVSVolumeTextures::UploadClassification(const avs::VolumeScene& scene, s
   this->Classification.SetValueMap(this->ScalarFormat.Scale, this->ScalarFormat.Shift);
   this->NotePeak(); // the mask and validity textures count too
   return true;
+}
+
+std::vector<vtkTextureObject*> vtkAVSVolumeTextures::BudgetTextures() const
+{
+  std::vector<vtkTextureObject*> held = this->VolumeTextures();
+  if (this->OtherTextures)
+  {
+    const std::vector<vtkTextureObject*> others = this->OtherTextures();
+    held.insert(held.begin(), others.begin(), others.end()); // the classification's stay last
+  }
+  return held;
 }
 
 std::vector<vtkTextureObject*> vtkAVSVolumeTextures::VolumeTextures() const

@@ -110,6 +110,12 @@ public:
   /// Every 3D texture held for the volume (the GPU memory budget counts them), the
   /// classification's last.
   std::vector<vtkTextureObject*> VolumeTextures() const;
+  /// Other 3D textures of the volume, outside this class (the extended model's fluence), which
+  /// the GPU memory budget counts beside VolumeTextures when they allocate (set by
+  /// vtkAVSRayCaster).
+  std::function<std::vector<vtkTextureObject*>()> OtherTextures;
+  /// VolumeTextures with OtherTextures before them: what an allocation is admitted beside.
+  std::vector<vtkTextureObject*> BudgetTextures() const;
   /// Bytes of the volume textures held now (vtkAVSTextureMemory::Bytes), and the most they
   /// held at once since the last release (the precomputation's scratch grids included).
   double HeldBytes() const;

@@ -7,7 +7,8 @@
 // first texture), a 100^3 volume (4 MiB of scalars fit, its second texture does not, for the
 // ambient-occlusion and ambient-scattering mappers; emission-absorption fits it), then a 32^3
 // volume, which must render. The mask counts too: EA's 100^3 volume with a mask of its size is
-// refused. The window's GL objects are counted by name after each frame.
+// refused. The window's GL objects are counted by name after each frame. Then ambient
+// scattering's two models under SetMaximumGPUMemory: the extended model's fluence counts.
 #include "MapperTestScene.h"
 #include "SoakCensus.h"
 #include "TestErrorObserver.h"
@@ -17,6 +18,7 @@
 
 #include "vtkFloatArray.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -154,6 +156,83 @@ int main(int, char*[])
     Check(Brightness(Grab(window)) > 0.0, std::string(name) + ", 32^3: a picture");
   }
   unsetenv("AVS_GPU_MEMORY_LIMIT_MB");
+
+  // The extended model's fluence textures count in the budget (SetMaximumGPUMemory) too: with a
+  // budget that the paper's model fits at its peak and the extended model does not once its
+  // fluence is added, the paper's renders and the extended model gives one clear error.
+  {
+    vtkNew<vtkRenderWindow> window;
+    PrepareTestWindow(window, 96, 96);
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    renderer->GetActiveCamera()->SetPosition(0, 0, 6);
+    double paperPeak = 0.0, extendedHeld = 0.0;
+    for (int model = 0; model < 2; ++model)
+    {
+      vtkNew<vtkAmbientScatteringVolumeMapper> mapper;
+      if (model == 0)
+        mapper->SetScatteringModelToPaper();
+      else
+        mapper->SetScatteringModelToExtended();
+      mapper->SetInputData(middle);
+      vtkNew<vtkVolume> volume;
+      volume->SetMapper(mapper);
+      volume->SetProperty(Property());
+      renderer->AddVolume(volume);
+      window->Render();
+      (model == 0 ? paperPeak : extendedHeld) =
+        model == 0 ? mapper->GetGPUMemoryPeakBytes() : mapper->GetGPUMemoryBytes();
+      renderer->RemoveVolume(volume);
+      mapper->ReleaseGraphicsResources(window);
+    }
+    const int budget = static_cast<int>(std::ceil(paperPeak / (1024.0 * 1024.0)));
+    std::printf("AS 100^3: the paper's peak %.1f MiB, the extended model holds %.1f MiB; "
+                "budget %d MiB\n",
+      paperPeak / (1024.0 * 1024.0),
+      extendedHeld / (1024.0 * 1024.0),
+      budget);
+    Check(extendedHeld > (budget + 1) * 1024.0 * 1024.0,
+      "the extended model holds more than the paper's peak (its fluence)");
+    for (int model = 0; model < 2; ++model)
+    {
+      vtkNew<vtkAmbientScatteringVolumeMapper> mapper;
+      vtkNew<TestErrorObserver> errors;
+      mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+      if (model == 0)
+        mapper->SetScatteringModelToPaper();
+      else
+        mapper->SetScatteringModelToExtended();
+      mapper->SetMaximumGPUMemory(budget);
+      mapper->SetInputData(middle);
+      vtkNew<vtkVolume> volume;
+      volume->SetMapper(mapper);
+      volume->SetProperty(Property());
+      renderer->AddVolume(volume);
+      window->Render();
+      const std::string what = std::string(model == 0 ? "paper's" : "extended") + " model within " +
+        std::to_string(budget) + " MiB";
+      if (model == 0)
+      {
+        Check(errors->Errors == 0, what + ": no error (" + errors->LastError + ")");
+        Check(mapper->GetNumberOfRenderedFrames() == 1, what + ": rendered");
+      }
+      else
+      {
+        Check(errors->Errors == 1, what + ": one error, got " + std::to_string(errors->Errors));
+        Check(errors->LastError.find("out of GPU memory") != std::string::npos &&
+            errors->LastError.find("SetMaximumGPUMemory") != std::string::npos,
+          what + ": the error says what is wrong: " + errors->LastError);
+        Check(mapper->GetNumberOfRenderedFrames() == 0, what + ": nothing drawn");
+        Check(mapper->GetGPUMemoryBytes() == 0.0, what + ": its textures released");
+      }
+      std::printf("%s: %d errors (%s), %d frames\n",
+        what.c_str(),
+        errors->Errors,
+        errors->LastError.c_str(),
+        mapper->GetNumberOfRenderedFrames());
+      renderer->RemoveVolume(volume);
+    }
+  }
   std::printf("%s\n", failures ? "FAILED" : "PASSED");
   return failures ? 1 : 0;
 }
