@@ -80,7 +80,7 @@ def main(plugin, out):
                         ("ScatteringAnisotropy", 0.0), ("AmbientRadius", 0.0),
                         ("LightScale", 1.0), ("EmissionWeight", 0.0),
                         ("LightVolumeMaximumDimension", 128), ("MaximumGPUMemory", 0),
-                        ("ScatteringModel", "Extended")):
+                        ("ScatteringModel", "Extended"), ("DiffusionVolumeMaximumDimension", 64)):
         checks.check(display.GetPropertyValue(name) == value,
                      "%s defaults to %r (got %r)" % (name, value, display.GetPropertyValue(name)))
 
@@ -116,6 +116,15 @@ def main(plugin, out):
     display.ScatteringModel = "Extended"
     checks.check(t.psnr(base, render("pv_ambient_scattering_extended")) > 50.0,
                  "back to the extended model, its picture")
+    # The diffusion grid reaches the mapper: a coarser one changes the diffuse light a little.
+    display.DiffusionVolumeMaximumDimension = 8
+    coarse = render("pv_ambient_scattering_diffusion8")
+    checks.check(mapper is not None and "DiffusionVolumeMaximumDimension: 8" in str(mapper),
+                 "DiffusionVolumeMaximumDimension reaches the mapper")
+    checks.check(t.psnr(base, coarse) < 80.0 and t.lit_fraction(coarse) > 0.15,
+                 "a coarser diffusion grid renders another picture (%.1f dB)"
+                 % t.psnr(base, coarse))
+    display.DiffusionVolumeMaximumDimension = 64
 
     # --- The VTK side: the same scene with ParaView's VTK and the plugin's mapper class.
     source = vtkRTAnalyticSource()

@@ -127,6 +127,16 @@ int vtkAmbientScatteringRepresentation::GetScatteringModel()
   return this->AmbientScatteringMapper->GetScatteringModel();
 }
 
+void vtkAmbientScatteringRepresentation::SetDiffusionVolumeMaximumDimension(int dimension)
+{
+  this->AmbientScatteringMapper->SetDiffusionVolumeMaximumDimension(dimension);
+}
+
+int vtkAmbientScatteringRepresentation::GetDiffusionVolumeMaximumDimension()
+{
+  return this->AmbientScatteringMapper->GetDiffusionVolumeMaximumDimension();
+}
+
 void vtkAmbientScatteringRepresentation::SetSampleDistance(double distance)
 {
   for (vtkAVSVolumeMapper* m : this->Mappers())
@@ -225,6 +235,8 @@ void vtkAmbientScatteringRepresentation::PrintSelf(ostream& os, vtkIndent indent
   os << indent << "EmissionWeight: " << this->GetEmissionWeight() << "\n";
   os << indent << "LightVolumeMaximumDimension: " << this->GetLightVolumeMaximumDimension() << "\n";
   os << indent << "ScatteringModel: " << this->GetScatteringModel() << "\n";
+  os << indent << "DiffusionVolumeMaximumDimension: " << this->GetDiffusionVolumeMaximumDimension()
+     << "\n";
   os << indent << "SampleDistance: " << this->GetSampleDistance() << "\n";
   os << indent << "UseJittering: " << this->GetUseJittering() << "\n";
   os << indent << "MaximumGPUMemory: " << this->GetMaximumGPUMemory() << " MiB\n";

@@ -120,6 +120,15 @@ public:
 
   ///@{
   /**
+   * Largest dimension per axis (2 to 1024) of the extended model's diffusion grid
+   * (vtkAmbientScatteringVolumeMapper::SetDiffusionVolumeMaximumDimension). Default 64.
+   */
+  void SetDiffusionVolumeMaximumDimension(int dimension);
+  int GetDiffusionVolumeMaximumDimension();
+  ///@}
+
+  ///@{
+  /**
    * Ray-marching step in data units for the three mappers. Default 0: half the smallest voxel
    * spacing.
    */
