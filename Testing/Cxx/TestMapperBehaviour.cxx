@@ -161,6 +161,45 @@ int main(int argc, char* argv[])
     AVS_CHECK(Psnr(paper, scene.Render()) > 60.0);
     AVS_CHECK(mapper->GetNumberOfDiffusionRebuilds() == 3);
     AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 21);
+    // What the light volumes do not hold but the diffusion's source does: a light's colour, a
+    // positional light's attenuation and its cone. Each change re-solves and changes the
+    // picture; undone, the picture is the first again.
+    {
+      mapper->SetScatteringModelToExtended();
+      const auto before = scene.Render();
+      int solves = mapper->GetNumberOfDiffusionRebuilds();
+      vtkLightCollection* lights = scene.Renderer->GetLights();
+      vtkLight* sun = vtkLight::SafeDownCast(lights->GetItemAsObject(0));
+      vtkLight* lamp = vtkLight::SafeDownCast(lights->GetItemAsObject(1));
+      AVS_CHECK(sun && lamp && lamp->GetPositional());
+      const char* changes[3] = { "the sun's colour", "the lamp's attenuation", "the lamp's cone" };
+      for (int c = 0; c < 3 && sun && lamp; ++c)
+      {
+        if (c == 0)
+          sun->SetDiffuseColor(0.4, 0.6, 1.0);
+        else if (c == 1)
+          lamp->SetAttenuationValues(1.0, 0.0, 8.0);
+        else
+          lamp->SetConeAngle(20);
+        const auto changed = scene.Render();
+        std::printf("%s: %d solve(s), %.1f dB from before\n",
+          changes[c],
+          mapper->GetNumberOfDiffusionRebuilds() - solves,
+          Psnr(before, changed));
+        AVS_CHECK(mapper->GetNumberOfDiffusionRebuilds() == solves + 1);
+        AVS_CHECK(Psnr(before, changed) < 50.0);
+        if (c == 0)
+          sun->SetDiffuseColor(1.0, 1.0, 1.0);
+        else if (c == 1)
+          lamp->SetAttenuationValues(1.0, 0.0, 2.0);
+        else
+          lamp->SetConeAngle(180);
+        AVS_CHECK(Psnr(before, scene.Render()) > 60.0);
+        AVS_CHECK(mapper->GetNumberOfDiffusionRebuilds() == solves + 2);
+        solves += 2;
+      }
+      mapper->SetScatteringModelToPaper();
+    }
 
     std::ostringstream os;
     mapper->Print(os);
