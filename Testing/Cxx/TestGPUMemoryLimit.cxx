@@ -166,25 +166,40 @@ int main(int, char*[])
     vtkNew<vtkRenderer> renderer;
     window->AddRenderer(renderer);
     renderer->GetActiveCamera()->SetPosition(0, 0, 6);
-    double paperPeak = 0.0, extendedHeld = 0.0;
-    for (int model = 0; model < 2; ++model)
+    // Renders the 100^3 volume with the paper's (0) or the extended (1) model under `budget`
+    // MiB (0: none), errors to `errors`; its mapper and its volume, still in the renderer (removing
+    // it releases the mapper's textures).
+    struct Rendered
     {
-      vtkNew<vtkAmbientScatteringVolumeMapper> mapper;
+      vtkSmartPointer<vtkAmbientScatteringVolumeMapper> Mapper;
+      vtkSmartPointer<vtkVolume> Volume;
+    };
+    auto renderModel = [&](int model, int budget, vtkCommand* errors)
+    {
+      auto mapper = vtkSmartPointer<vtkAmbientScatteringVolumeMapper>::New();
+      if (errors)
+        mapper->AddObserver(vtkCommand::ErrorEvent, errors);
       if (model == 0)
         mapper->SetScatteringModelToPaper();
       else
         mapper->SetScatteringModelToExtended();
+      mapper->SetMaximumGPUMemory(budget);
       mapper->SetInputData(middle);
-      vtkNew<vtkVolume> volume;
+      auto volume = vtkSmartPointer<vtkVolume>::New();
       volume->SetMapper(mapper);
       volume->SetProperty(Property());
       renderer->AddVolume(volume);
       window->Render();
-      (model == 0 ? paperPeak : extendedHeld) =
-        model == 0 ? mapper->GetGPUMemoryPeakBytes() : mapper->GetGPUMemoryBytes();
-      renderer->RemoveVolume(volume);
-      mapper->ReleaseGraphicsResources(window);
-    }
+      return Rendered{ mapper, volume };
+    };
+    const Rendered paper = renderModel(0, 0, nullptr);
+    const double paperPeak = paper.Mapper->GetGPUMemoryPeakBytes();
+    renderer->RemoveVolume(paper.Volume);
+    paper.Mapper->ReleaseGraphicsResources(window);
+    const Rendered extended = renderModel(1, 0, nullptr);
+    const double extendedHeld = extended.Mapper->GetGPUMemoryBytes();
+    renderer->RemoveVolume(extended.Volume);
+    extended.Mapper->ReleaseGraphicsResources(window);
     const int budget = static_cast<int>(std::ceil(paperPeak / (1024.0 * 1024.0)));
     std::printf("AS 100^3: the paper's peak %.1f MiB, the extended model holds %.1f MiB; "
                 "budget %d MiB\n",
@@ -195,20 +210,9 @@ int main(int, char*[])
       "the extended model holds more than the paper's peak (its fluence)");
     for (int model = 0; model < 2; ++model)
     {
-      vtkNew<vtkAmbientScatteringVolumeMapper> mapper;
       vtkNew<TestErrorObserver> errors;
-      mapper->AddObserver(vtkCommand::ErrorEvent, errors);
-      if (model == 0)
-        mapper->SetScatteringModelToPaper();
-      else
-        mapper->SetScatteringModelToExtended();
-      mapper->SetMaximumGPUMemory(budget);
-      mapper->SetInputData(middle);
-      vtkNew<vtkVolume> volume;
-      volume->SetMapper(mapper);
-      volume->SetProperty(Property());
-      renderer->AddVolume(volume);
-      window->Render();
+      const Rendered rendered = renderModel(model, budget, errors);
+      vtkAmbientScatteringVolumeMapper* mapper = rendered.Mapper;
       const std::string what = std::string(model == 0 ? "paper's" : "extended") + " model within " +
         std::to_string(budget) + " MiB";
       if (model == 0)
@@ -230,7 +234,7 @@ int main(int, char*[])
         errors->Errors,
         errors->LastError.c_str(),
         mapper->GetNumberOfRenderedFrames());
-      renderer->RemoveVolume(volume);
+      renderer->RemoveVolume(rendered.Volume);
     }
   }
   std::printf("%s\n", failures ? "FAILED" : "PASSED");

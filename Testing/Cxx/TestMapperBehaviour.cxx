@@ -22,9 +22,11 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 namespace
 {
@@ -172,28 +174,29 @@ int main(int argc, char* argv[])
       vtkLight* sun = vtkLight::SafeDownCast(lights->GetItemAsObject(0));
       vtkLight* lamp = vtkLight::SafeDownCast(lights->GetItemAsObject(1));
       AVS_CHECK(sun && lamp && lamp->GetPositional());
-      const char* changes[3] = { "the sun's colour", "the lamp's attenuation", "the lamp's cone" };
-      for (int c = 0; c < 3 && sun && lamp; ++c)
+      // Each change: its name, and setting it (true) or undoing it (false).
+      const std::pair<const char*, std::function<void(bool)>> changes[3] = {
+        { "the sun's colour",
+          [&](bool on) { sun->SetDiffuseColor(on ? 0.4 : 1.0, on ? 0.6 : 1.0, 1.0); } },
+        { "the lamp's attenuation",
+          [&](bool on) { lamp->SetAttenuationValues(1.0, 0.0, on ? 8.0 : 2.0); } },
+        { "the lamp's cone", [&](bool on) { lamp->SetConeAngle(on ? 20 : 180); } }
+      };
+      for (const auto& [name, set] : changes)
       {
-        if (c == 0)
-          sun->SetDiffuseColor(0.4, 0.6, 1.0);
-        else if (c == 1)
-          lamp->SetAttenuationValues(1.0, 0.0, 8.0);
-        else
-          lamp->SetConeAngle(20);
+        if (!sun || !lamp)
+        {
+          break;
+        }
+        set(true);
         const auto changed = scene.Render();
         std::printf("%s: %d solve(s), %.1f dB from before\n",
-          changes[c],
+          name,
           mapper->GetNumberOfDiffusionRebuilds() - solves,
           Psnr(before, changed));
         AVS_CHECK(mapper->GetNumberOfDiffusionRebuilds() == solves + 1);
         AVS_CHECK(Psnr(before, changed) < 50.0);
-        if (c == 0)
-          sun->SetDiffuseColor(1.0, 1.0, 1.0);
-        else if (c == 1)
-          lamp->SetAttenuationValues(1.0, 0.0, 2.0);
-        else
-          lamp->SetConeAngle(180);
+        set(false);
         AVS_CHECK(Psnr(before, scene.Render()) > 60.0);
         AVS_CHECK(mapper->GetNumberOfDiffusionRebuilds() == solves + 2);
         solves += 2;
