@@ -1,12 +1,16 @@
 // VTK regression image test: a VDB fog volume imported with vtkOpenVDBImageReader and rendered by
 // vtkAmbientScatteringVolumeMapper (a directional light and a point light), with its direction
-// matrix. Argument: the .vdb file (written by MakeTestCloudVDB), then -V baseline -T directory.
+// matrix. Argument: the .vdb file (written by MakeTestCloudVDB), then -V baseline -T directory
+// [--remake | --wrong] (RegressionImage.h; --remake's check: the CPU reference of the
+// same scene at 55 dB or more).
 #include "MapperTestScene.h"
+#include "RegressionImage.h"
 #include "TestErrorObserver.h"
 
 #include "vtkAmbientScatteringVolumeMapper.h"
+#include "vtkEmissionAbsorptionVolumeMapper.h"
 #include "vtkOpenVDBImageReader.h"
-#include "vtkRegressionTestImage.h"
+#include "vtkVolumeReferenceRenderer.h"
 
 #include <iostream>
 
@@ -14,7 +18,8 @@ int main(int argc, char* argv[])
 {
   if (argc < 2)
   {
-    std::cerr << "usage: TestOpenVDBRendering FILE.vdb -V baseline.png -T directory\n";
+    std::cerr << "usage: TestOpenVDBRendering FILE.vdb -V baseline.png -T directory [--remake | "
+                 "--wrong]\n";
     return EXIT_FAILURE;
   }
   vtkNew<vtkOpenVDBImageReader> reader;
@@ -47,7 +52,8 @@ int main(int argc, char* argv[])
   property->SetScalarOpacityUnitDistance(0.08);
 
   vtkNew<vtkRenderWindow> window;
-  PrepareTestWindow(window, 160, 160);
+  const int size = 160;
+  PrepareTestWindow(window, size, size);
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0.35, 0.5, 0.75);
   window->AddRenderer(renderer);
@@ -82,6 +88,31 @@ int main(int argc, char* argv[])
     std::cerr << "the mapper did not render: " << errors->LastError << "\n";
     return EXIT_FAILURE;
   }
-  const int result = vtkRegressionTestImageThreshold(window, 10.0);
-  return result == vtkRegressionTester::PASSED ? EXIT_SUCCESS : EXIT_FAILURE;
+  auto check = [&]()
+  {
+    vtkNew<vtkVolumeReferenceRenderer> reference;
+    reference->SetInputConnection(reader->GetOutputPort());
+    reference->SetVolumeProperty(property);
+    reference->SetRenderer(renderer);
+    reference->SetImageSize(size, size);
+    reference->SetAlbedo(0.95);
+    reference->SetAnisotropy(0.5);
+    reference->SetBackground(renderer->GetBackground());
+    reference->Update();
+    const double psnr = Psnr(Grab(window), reference->GetOutput());
+    std::cout << "against the CPU reference: " << psnr << " dB\n";
+    return psnr >= 55.0;
+  };
+  auto otherMapper = [&]() -> vtkSmartPointer<vtkImageData>
+  {
+    vtkNew<vtkEmissionAbsorptionVolumeMapper> ea;
+    ea->SetInputConnection(reader->GetOutputPort());
+    ea->UseJitteringOff();
+    volume->SetMapper(ea);
+    window->Render();
+    auto out = Grab(window);
+    volume->SetMapper(mapper);
+    return out;
+  };
+  return RegressionTest(argc, argv, Grab(window), check, otherMapper);
 }
