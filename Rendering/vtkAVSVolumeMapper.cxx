@@ -155,6 +155,10 @@ bool vtkAVSVolumeMapper::PrepareScene(vtkVolume* volume)
     p.SampleDistance = this->SpacingAdjustedSampleDistance(spacing, extent);
   }
   p.TerminationTransmittance = this->TerminationTransmittance;
+  p.Display.Exposure = this->Exposure;
+  p.Display.Curve =
+    this->ToneMapping == ShoulderToneMapping ? avs::ToneMapping::Shoulder : avs::ToneMapping::Clamp;
+  p.AutoExposure = this->AutoExposure != 0;
   this->FillParameters(p);
   in.Parameters = p.Resolve(in.Whole); // the automatic radius: the whole image's
 
@@ -483,6 +487,7 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.Mapper = this;
   frame.PeelingFront = role == vtkAVSRenderPasses::Role::PeelingFront;
   frame.ImageSampleDistance = distance;
+  frame.Display = this->ResolveDisplay(renderer, volume);
   // The adjustment times the ray-casting pass alone (the precomputation does not scale with the
   // rays), finished on the GPU as vtkOpenGLGPUVolumeRayCastMapper finishes its frames.
   if (adjust)
@@ -504,6 +509,7 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     in.SecondsPerRay = seconds / std::max(1.0, static_cast<double>(rays[0]) * rays[1]);
   }
   this->LastImageSampleDistance = static_cast<float>(distance);
+  this->LastExposure = frame.Display.Exposure;
   this->NumberOfBricks = in.RayCaster.GetNumberOfBricks();
   ++this->NumberOfRenderedFrames;
   if (interactive)
@@ -511,6 +517,38 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     ++this->NumberOfInteractiveFrames;
   }
   this->TimeToDraw = std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+avs::DisplayTransform vtkAVSVolumeMapper::ResolveDisplay(vtkRenderer* renderer, vtkVolume* volume)
+{
+  const avs::ScatteringParameters& rp = this->Internal->Parameters;
+  avs::DisplayTransform display = rp.Display;
+  // Auto exposure meters the lights (world space) over the world box of the whole image (of
+  // which the input may be a piece: every process of a distributed render meters the same);
+  // only ambient scattering is lit by them.
+  if (rp.AutoExposure && this->GetEffect() == 2)
+  {
+    const avs::GridGeometry& whole = this->Internal->Whole;
+    const avs::Vec3 lo = whole.BoxLower(), hi = whole.BoxUpper();
+    avs::Vec3 low{ VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, high = low * -1.0;
+    for (int c = 0; c < 8; ++c)
+    {
+      const avs::Vec3 data =
+        whole.LocalToWorld({ c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z });
+      double in[4] = { data.x, data.y, data.z, 1.0 }, out[4];
+      volume->GetMatrix()->MultiplyPoint(in, out);
+      const avs::Vec3 world{ out[0] / out[3], out[1] / out[3], out[2] / out[3] };
+      low = { std::min(low.x, world.x), std::min(low.y, world.y), std::min(low.z, world.z) };
+      high = { std::max(high.x, world.x), std::max(high.y, world.y), std::max(high.z, world.z) };
+    }
+    display.Exposure *= avs::AutoExposureFactor(this->Internal->WorldLights, low, high);
+  }
+  // Under vtkToneMappingPass the pass maps the picture: the radiance goes to it linear.
+  if (vtkAVSRenderPasses::UnderToneMapping(renderer))
+  {
+    display.Curve = avs::ToneMapping::Clamp;
+  }
+  return display;
 }
 
 void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
@@ -532,6 +570,10 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastImageSampleDistance: " << this->LastImageSampleDistance << "\n";
   os << indent << "UseJittering: " << (this->UseJittering ? "On" : "Off") << "\n";
   os << indent << "TerminationTransmittance: " << this->TerminationTransmittance << "\n";
+  os << indent << "Exposure: " << this->Exposure << "\n";
+  os << indent << "ToneMapping: " << this->GetToneMappingAsString() << "\n";
+  os << indent << "AutoExposure: " << (this->AutoExposure ? "On" : "Off") << "\n";
+  os << indent << "LastExposure: " << this->LastExposure << "\n";
   os << indent << "PrecomputeOnGPU: " << (this->PrecomputeOnGPU ? "On" : "Off") << "\n";
   os << indent << "LightVolumesOnGPU: " << (this->LightVolumesOnGPU ? "yes" : "no") << "\n";
   os << indent << "OcclusionOnGPU: " << (this->OcclusionOnGPU ? "yes" : "no") << "\n";

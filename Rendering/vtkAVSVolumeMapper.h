@@ -64,6 +64,7 @@
 
 namespace avs
 {
+struct DisplayTransform;
 struct GridGeometry;
 struct ScatteringParameters;
 class ScatteringTable;
@@ -171,6 +172,63 @@ public:
   vtkSetClampMacro(TerminationTransmittance, double, 0.0, 1.0);
   vtkGetMacro(TerminationTransmittance, double);
   ///@}
+
+  ///@{
+  /**
+   * The display transform: what the framebuffer receives of the linear radiance the rays
+   * integrate (ALGORITHM.md section 1, "Display"). Exposure is a factor on the radiance (>= 0);
+   * then the tone curve, ToneMapping: ClampToneMapping (the radiance as it is, which the
+   * framebuffer clamps at 1) or ShoulderToneMapping (linear up to 0.6, then a shoulder that
+   * approaches 1 without reaching it, applied to the largest of R, G and B so that hue and
+   * saturation stay: highlights compress instead of burning out). Applied once, where each ray
+   * ends (for a split volume or another image sample distance, to the composited rays), before
+   * the volume is composited over what the renderer drew: geometry is not touched. Under a
+   * vtkToneMappingPass the volume hands over its radiance times the exposure, without its tone
+   * curve: the pass maps the whole picture.
+   *
+   * Defaults: the identity (exposure 1, clamp) for the emission-absorption and
+   * ambient-occlusion mappers, whose colours do not exceed the transfer function's;
+   * vtkAmbientScatteringVolumeMapper sets its own (see there).
+   */
+  vtkSetClampMacro(Exposure, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Exposure, double);
+  enum
+  {
+    ClampToneMapping = 0,
+    ShoulderToneMapping = 1
+  };
+  vtkSetClampMacro(ToneMapping, int, ClampToneMapping, ShoulderToneMapping);
+  vtkGetMacro(ToneMapping, int);
+  void SetToneMappingToClamp() { this->SetToneMapping(ClampToneMapping); }
+  void SetToneMappingToShoulder() { this->SetToneMapping(ShoulderToneMapping); }
+  const char* GetToneMappingAsString()
+  {
+    return this->ToneMapping == ShoulderToneMapping ? "Shoulder" : "Clamp";
+  }
+  ///@}
+
+  ///@{
+  /**
+   * Auto exposure: the exposure applied is Exposure times a factor metered from the light the
+   * medium receives: 4 pi over the mean luminance of the lights' summed irradiance (VTK's units,
+   * 4 pi x intensity x colour x LightScale, with attenuation and cones) over the volume's box,
+   * unshadowed. One white light of intensity 1 meters 1; lights of intensity 40, or a
+   * LightScale of 40, meter 1/40. The meter does not depend on the camera, nor on the light's
+   * direction, so an orbit with a headlight or a light kit keeps the exposure (as do the
+   * interactor's reduced frames); it changes when the lights' intensities, colours, attenuation
+   * or cones change, or a positional light moves against the volume. The emission-absorption
+   * and ambient-occlusion mappers are not lit by the lights: their factor is 1. Default off.
+   */
+  vtkSetClampMacro(AutoExposure, vtkTypeBool, 0, 1);
+  vtkGetMacro(AutoExposure, vtkTypeBool);
+  vtkBooleanMacro(AutoExposure, vtkTypeBool);
+  ///@}
+
+  /**
+   * The exposure the last frame applied (Exposure, times the metered factor with AutoExposure
+   * on); 0 before the first frame.
+   */
+  vtkGetMacro(LastExposure, double);
 
   ///@{
   /**
@@ -375,6 +433,10 @@ protected:
   vtkTypeBool UseJittering = 1;
   double TerminationTransmittance = 1.0 / 255.0;
   vtkTypeBool PrecomputeOnGPU = 1;
+  double Exposure = 1.0;
+  int ToneMapping = ClampToneMapping;
+  vtkTypeBool AutoExposure = 0;
+  double LastExposure = 0.0;
   vtkTypeBool LightVolumesOnGPU = 0;
   vtkTypeBool OcclusionOnGPU = 0;
   int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
@@ -425,6 +487,9 @@ private:
   bool AverageAcrossPieces(const avs::GridGeometry& lightGrid, std::string& error);
   /// sigma_t on the CPU (Internals' Extinction), rebuilt when the data or the opacity changed.
   void UpdateExtinction();
+  /// The frame's display transform: the parameters' exposure (metered with AutoExposure) and
+  /// tone curve (none under a vtkToneMappingPass).
+  avs::DisplayTransform ResolveDisplay(vtkRenderer* renderer, vtkVolume* volume);
   // One warning when the property's shading flags ask for what this mapper does not do.
   void WarnAboutShading(vtkVolumeProperty* property);
   std::string ShadingWarning;

@@ -12,6 +12,9 @@ vtkStandardNewMacro(vtkAmbientScatteringVolumeMapper);
 vtkAmbientScatteringVolumeMapper::vtkAmbientScatteringVolumeMapper()
   : Table(vtkAmbientScatteringTable::New())
 {
+  // The display transform's defaults for lit, multiply scattering media (see the header).
+  this->Exposure = DefaultExposure;
+  this->ToneMapping = ShoulderToneMapping;
 }
 
 vtkAmbientScatteringVolumeMapper::~vtkAmbientScatteringVolumeMapper()

@@ -1,5 +1,6 @@
 #include "vtkVolumeReferenceRenderer.h"
 
+#include "DisplayTransform.h"
 #include "PathTracer.h"
 #include "ReferenceRenderer.h"
 #include "vtkAVSClipTranslator.h"
@@ -7,6 +8,7 @@
 #include "vtkAVSPropertyTranslator.h"
 #include "vtkAVSSceneTranslator.h"
 #include "vtkAmbientScatteringTable.h"
+#include "vtkAmbientScatteringVolumeMapper.h"
 
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
@@ -322,7 +324,7 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
       h,
       nullptr,
       [this](double v) { this->UpdateProgress(v); });
-    this->WriteOutput(output, image, scene.Background);
+    this->WriteOutput(output, image, scene.Background, this->ResolveDisplay(scene));
     this->UpdateProgress(1.0);
     return 1;
   }
@@ -347,14 +349,46 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
     h,
     [this](double v) { this->UpdateProgress(0.5 + 0.5 * v); });
 
-  this->WriteOutput(output, image, scene.Background);
+  this->WriteOutput(output, image, scene.Background, this->ResolveDisplay(scene));
   this->UpdateProgress(1.0);
   return 1;
 }
 
+avs::DisplayTransform vtkVolumeReferenceRenderer::ResolveDisplay(const avs::VolumeScene& scene)
+{
+  const bool lit = this->RenderMode == AMBIENT_SCATTERING || this->RenderMode == PATH_TRACING;
+  avs::DisplayTransform display;
+  display.Exposure = this->Exposure > 0.0
+    ? this->Exposure
+    : (lit ? vtkAmbientScatteringVolumeMapper::DefaultExposure : 1.0);
+  const int curve = this->ToneMapping != AutomaticToneMapping
+    ? this->ToneMapping
+    : (lit ? ShoulderToneMapping : ClampToneMapping);
+  display.Curve =
+    curve == ShoulderToneMapping ? avs::ToneMapping::Shoulder : avs::ToneMapping::Clamp;
+  if (this->AutoExposure && lit)
+  {
+    const avs::GridGeometry& g = scene.Scalars.Geometry;
+    const avs::Vec3 lo = g.BoxLower(), hi = g.BoxUpper();
+    avs::Vec3 low{ VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, high = low * -1.0;
+    for (int c = 0; c < 8; ++c)
+    {
+      const avs::Vec3 w =
+        g.LocalToWorld({ c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z });
+      low = { std::min(low.x, w.x), std::min(low.y, w.y), std::min(low.z, w.z) };
+      high = { std::max(high.x, w.x), std::max(high.y, w.y), std::max(high.z, w.z) };
+    }
+    display.Exposure *= avs::AutoExposureFactor(scene.Lights, low, high);
+  }
+  this->ResolvedExposure = display.Exposure;
+  this->ResolvedToneMapping = curve;
+  return display;
+}
+
 void vtkVolumeReferenceRenderer::WriteOutput(vtkImageData* output,
   const avs::Image& image,
-  const avs::Vec3& background)
+  const avs::Vec3& background,
+  const avs::DisplayTransform& display)
 {
   const int w = image.Width, h = image.Height;
   output->SetExtent(0, w - 1, 0, h - 1, 0, 0);
@@ -373,7 +407,10 @@ void vtkVolumeReferenceRenderer::WriteOutput(vtkImageData* output,
     for (int x = 0; x < w; ++x)
     {
       const vtkIdType id = static_cast<vtkIdType>(y) * w + x;
-      const avs::Vec3 c = image.Composited(x, y, background);
+      // The volume's radiance through the display transform, then over the background, as the
+      // mappers composite it.
+      const float* l = image.At(x, y);
+      const avs::Vec3 c = display.Apply({ l[0], l[1], l[2] }) + background * (1.0 - l[3]);
       for (int k = 0; k < 3; ++k)
       {
         const double v = std::clamp(c[k], 0.0, 1.0);
@@ -408,6 +445,17 @@ void vtkVolumeReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ImageSize: " << this->ImageSize[0] << " x " << this->ImageSize[1] << "\n";
   os << indent << "Background: (" << this->Background[0] << ", " << this->Background[1] << ", "
      << this->Background[2] << ")\n";
+  os << indent << "Exposure: " << this->Exposure
+     << (this->Exposure > 0 ? "" : " (automatic: the render mode's mapper's)") << "\n";
+  os << indent << "ToneMapping: "
+     << (this->ToneMapping == AutomaticToneMapping
+            ? "Automatic (the render mode's mapper's)"
+            : (this->ToneMapping == ShoulderToneMapping ? "Shoulder" : "Clamp"))
+     << "\n";
+  os << indent << "AutoExposure: " << (this->AutoExposure ? "On" : "Off") << "\n";
+  os << indent << "ResolvedExposure: " << this->ResolvedExposure << "\n";
+  os << indent << "ResolvedToneMapping: "
+     << (this->ResolvedToneMapping == ShoulderToneMapping ? "Shoulder" : "Clamp") << "\n";
   os << indent << "Albedo: " << this->Albedo << "\n";
   os << indent << "Anisotropy: " << this->Anisotropy << "\n";
   os << indent << "ScatteringModel: " << this->GetScatteringModelAsString() << "\n";

@@ -35,7 +35,9 @@ class vtkAmbientScatteringTable;
 class vtkImageData;
 namespace avs
 {
+struct DisplayTransform;
 struct Image;
+struct VolumeScene;
 struct Vec3;
 }
 class vtkCamera;
@@ -165,7 +167,41 @@ public:
 
   ///@{
   /**
-   * Scattering albedo Lambda in [0, 1]. Default 0.9.
+   * The display transform of the "RGB" output, as the mappers apply it
+   * (vtkAVSVolumeMapper::SetExposure, SetToneMapping, SetAutoExposure): the premultiplied
+   * radiance times the exposure, through the tone curve, then composited over Background. The
+   * "Radiance" array stays linear. Exposure 0 and ToneMapping AutomaticToneMapping (the
+   * defaults) take the defaults of the render mode's mapper: exposure 1 and clamp for
+   * emission-absorption and ambient occlusion, vtkAmbientScatteringVolumeMapper's (exposure
+   * vtkAmbientScatteringVolumeMapper::DefaultExposure, the shoulder) for ambient scattering and
+   * path tracing, so that each mode's picture is its mapper's. AutoExposure (default off)
+   * multiplies the exposure by the lights' metered factor over the input's box in ambient
+   * scattering and path tracing. GetResolvedExposure and GetResolvedToneMapping say what the
+   * last render applied.
+   */
+  vtkSetClampMacro(Exposure, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Exposure, double);
+  enum ToneMappings
+  {
+    AutomaticToneMapping = -1,
+    ClampToneMapping = 0,
+    ShoulderToneMapping = 1
+  };
+  vtkSetClampMacro(ToneMapping, int, AutomaticToneMapping, ShoulderToneMapping);
+  vtkGetMacro(ToneMapping, int);
+  void SetToneMappingToAutomatic() { this->SetToneMapping(AutomaticToneMapping); }
+  void SetToneMappingToClamp() { this->SetToneMapping(ClampToneMapping); }
+  void SetToneMappingToShoulder() { this->SetToneMapping(ShoulderToneMapping); }
+  vtkSetClampMacro(AutoExposure, vtkTypeBool, 0, 1);
+  vtkGetMacro(AutoExposure, vtkTypeBool);
+  vtkBooleanMacro(AutoExposure, vtkTypeBool);
+  vtkGetMacro(ResolvedExposure, double);
+  vtkGetMacro(ResolvedToneMapping, int);
+  ///@}
+
+  ///@{
+  /**
+   * Scattering albedo Lambda in [0, 1]. Default 0.8.
    */
   vtkSetClampMacro(Albedo, double, 0.0, 1.0);
   vtkGetMacro(Albedo, double);
@@ -377,7 +413,12 @@ protected:
   vtkAmbientScatteringTable* ScatteringTable = nullptr;
   int ImageSize[2] = { 256, 256 };
   double Background[3] = { 0.0, 0.0, 0.0 };
-  double Albedo = 0.9;
+  double Exposure = 0.0;
+  int ToneMapping = AutomaticToneMapping;
+  vtkTypeBool AutoExposure = 0;
+  double ResolvedExposure = 0.0;
+  int ResolvedToneMapping = ClampToneMapping;
+  double Albedo = 0.8;
   double Anisotropy = 0.0;
   int ScatteringModel = ExtendedModel;
   double AmbientRadius = 0.0;
@@ -400,7 +441,13 @@ protected:
   int CroppingRegionFlags = 0x0002000;
 
 private:
-  void WriteOutput(vtkImageData* output, const avs::Image& image, const avs::Vec3& background);
+  void WriteOutput(vtkImageData* output,
+    const avs::Image& image,
+    const avs::Vec3& background,
+    const avs::DisplayTransform& display);
+  /// The display transform of this render: the mode's defaults where automatic, the metered
+  /// exposure with AutoExposure (ResolvedExposure, ResolvedToneMapping).
+  avs::DisplayTransform ResolveDisplay(const avs::VolumeScene& scene);
   vtkVolumeReferenceRenderer(const vtkVolumeReferenceRenderer&) = delete;
   void operator=(const vtkVolumeReferenceRenderer&) = delete;
 };

@@ -412,6 +412,13 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
     asx->SetAlbedo(scene.Albedo);
     asx->SetAnisotropy(scene.Anisotropy);
     asx->SetScatteringModelToExtended();
+    // The truth is linear: the lit mappers are measured on their radiance (exposure 1, no tone
+    // curve), as EA and AO are.
+    for (vtkAmbientScatteringVolumeMapper* lit : { as.Get(), asx.Get() })
+    {
+      lit->SetExposure(1.0);
+      lit->SetToneMappingToClamp();
+    }
 
     // EA's colours scaled by k (clamped at 1 by the transfer function).
     vtkNew<vtkVolumeProperty> eaProperty;

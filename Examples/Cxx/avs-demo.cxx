@@ -78,8 +78,7 @@ int RenderWithMappers(DemoScene& scene, int size, int lightGrid, const std::stri
   vtkNew<vtkEmissionAbsorptionVolumeMapper> ea;
   vtkNew<vtkAmbientOcclusionVolumeMapper> ao;
   vtkNew<vtkAmbientScatteringVolumeMapper> as;
-  as->SetAlbedo(0.9);
-  as->SetAnisotropy(0.3);
+  as->SetAnisotropy(0.3); // the medium scatters a little forwards; the rest: the defaults
   if (lightGrid > 0)
   {
     as->SetLightVolumeMaximumDimension(lightGrid);
@@ -183,7 +182,6 @@ int RenderWithReference(DemoScene& scene, int size, int lightGrid, const std::st
     renderer->SetRenderer(scene.Renderer);
     renderer->SetRenderMode(mode.Value);
     renderer->SetImageSize(size, size);
-    renderer->SetAlbedo(0.9);
     renderer->SetAnisotropy(0.3);
     if (lightGrid > 0)
     {

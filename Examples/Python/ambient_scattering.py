@@ -32,8 +32,10 @@ prop.SetScalarOpacityUnitDistance(4.0)
 
 mapper = ambientscattering.vtkAmbientScatteringVolumeMapper()
 mapper.SetInputConnection(source.GetOutputPort())
-mapper.SetAlbedo(0.9)        # share of extinction that scatters
+mapper.SetAlbedo(0.8)        # share of extinction that scatters
 mapper.SetAnisotropy(0.4)    # forward scattering
+mapper.SetExposure(0.5)      # the display: radiance x exposure, then a shoulder (the defaults)
+mapper.SetToneMappingToShoulder()
 mapper.SetAmbientRadius(3.0)  # world units; 0 = automatic
 
 volume = vtkVolume()

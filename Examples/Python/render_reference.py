@@ -56,7 +56,7 @@ reference.SetInputConnection(source.GetOutputPort())
 reference.SetVolumeProperty(prop)
 reference.SetRenderer(renderer)
 reference.SetRenderModeToAmbientScattering()
-reference.SetAlbedo(0.9)
+reference.SetAlbedo(0.8)
 reference.SetAnisotropy(0.4)
 reference.SetImageSize(128, 128)
 

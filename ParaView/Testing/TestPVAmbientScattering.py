@@ -76,7 +76,8 @@ def main(plugin, out):
     view.CameraViewUp = CAMERA["view_up"]
     view.CameraViewAngle = CAMERA["view_angle"]
     view.CameraParallelProjection = 0
-    for name, value in (("LightingModel", "Ambient Scattering"), ("Albedo", 0.9),
+    for name, value in (("LightingModel", "Ambient Scattering"), ("Albedo", 0.8),
+                        ("Exposure", 0.5), ("ToneMapping", "Shoulder"), ("AutoExposure", 0),
                         ("ScatteringAnisotropy", 0.0), ("AmbientRadius", 0.0),
                         ("LightScale", 1.0), ("EmissionWeight", 0.0),
                         ("LightVolumeMaximumDimension", 128), ("MaximumGPUMemory", 0),
@@ -195,7 +196,19 @@ def main(plugin, out):
     def setter(name, value):
         return lambda: display.SetPropertyWithName(name, value)
 
-    changes("pv_albedo", setter("Albedo", 0.3), setter("Albedo", 0.9), "Albedo 0.9 -> 0.3")
+    changes("pv_albedo", setter("Albedo", 0.3), setter("Albedo", 0.8), "Albedo 0.8 -> 0.3")
+    # The display transform reaches the mapper and changes the picture.
+    changes("pv_exposure", setter("Exposure", 1.5), setter("Exposure", 0.5), "Exposure 0.5 -> 1.5")
+    display.ToneMapping = "Clamp (none)"
+    pv.Render(view)
+    checks.check(mapper is not None and "ToneMapping: Clamp" in str(mapper),
+                 "ToneMapping reaches the mapper")
+    display.ToneMapping = "Shoulder"
+    display.AutoExposure = 1
+    pv.Render(view)
+    checks.check(mapper is not None and "AutoExposure: On" in str(mapper),
+                 "AutoExposure reaches the mapper")
+    display.AutoExposure = 0
     changes("pv_anisotropy", setter("ScatteringAnisotropy", 0.8),
             setter("ScatteringAnisotropy", 0.0), "Anisotropy 0 -> 0.8")
     ea = changes("pv_emission_absorption", setter("LightingModel", "Emission-Absorption"),

@@ -4,6 +4,7 @@
 #ifndef avs_ScatteringParameters_h
 #define avs_ScatteringParameters_h
 
+#include "DisplayTransform.h"
 #include "Grid.h"
 
 #include <algorithm>
@@ -29,7 +30,7 @@ enum class ScatteringModel
 struct ScatteringParameters
 {
   // Medium (section 1).
-  double Albedo = 0.9;         ///< Lambda in [0, 1]
+  double Albedo = 0.8;         ///< Lambda in [0, 1]
   double Anisotropy = 0.0;     ///< Henyey–Greenstein g in [-0.95, 0.95]
   double AmbientRadius = 0.0;  ///< r in the grid's (data) units; 0: automatic
   double EmissionWeight = 0.0; ///< k_e >= 0: emitted radiance k_e c
@@ -54,6 +55,14 @@ struct ScatteringParameters
   double TerminationTransmittance = 1.0 / 255.0; ///< stop a ray when T falls below
   int LightVolumeMaximumDimension = 128;     ///< light volumes use the data's size, capped by this
   int OcclusionVolumeMaximumDimension = 128; ///< the AO volume likewise
+
+  // Display (DisplayTransform.h): exposure and tone curve of the linear radiance. The defaults
+  // here are the identity (the emission-absorption and ambient-occlusion mappers' defaults);
+  // vtkAmbientScatteringVolumeMapper sets its own.
+  DisplayTransform Display;
+  /// Display.Exposure is multiplied by AutoExposureFactor of the lights (the mappers meter it;
+  /// after Resolve, Display.Exposure is still the user's factor).
+  bool AutoExposure = false;
 
   /// The automatic ambient radius of a grid: 1/64 of the box diagonal, but at least one voxel,
   /// and at most half the box's smallest side, so that the ball fits into thin volumes (a slab of
@@ -113,6 +122,8 @@ struct ScatteringParameters
     p.DiffusionVolumeMaximumDimension = std::max(2, p.DiffusionVolumeMaximumDimension);
     p.DiffusionIterations = std::clamp(p.DiffusionIterations, 0, 4096);
     p.DiffusionCoarseIterations = std::clamp(p.DiffusionCoarseIterations, 0, 4096);
+    p.Display.Exposure =
+      std::isfinite(p.Display.Exposure) ? std::max(0.0, p.Display.Exposure) : 1.0;
     return p;
   }
 };

@@ -1,6 +1,6 @@
 #include "vtkAVSImageSampler.h"
 
-#include "vtkAVSShaders.h"
+#include "vtkAVSShaderAssembly.h"
 
 #include "ImageSampleDistance.h"
 
@@ -16,6 +16,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <string>
 
 vtkAVSImageSampler::vtkAVSImageSampler() = default;
 
@@ -60,7 +61,20 @@ bool vtkAVSImageSampler::EnsureTarget(vtkOpenGLRenderWindow* window, int width, 
   {
     return true;
   }
-  if (!this->Target)
+  if (this->Target)
+  {
+    // Another size: a new texture and a new framebuffer. (Reallocating the texture object in
+    // place gives it a new GL name, and vtkOpenGLFramebufferObject does not attach the same
+    // texture object again: the framebuffer kept the old, deleted name, and the pass drawn into
+    // it never reached the composite. Seen as a blank volume after the target changed size.)
+    this->Target->ReleaseGraphicsResources(window);
+    this->Target = nullptr;
+    if (this->Framebuffer)
+    {
+      this->Framebuffer->ReleaseGraphicsResources(window);
+      this->Framebuffer = nullptr;
+    }
+  }
   {
     this->Target = vtkSmartPointer<vtkTextureObject>::New();
     this->Target->SetContext(window);
@@ -70,10 +84,6 @@ bool vtkAVSImageSampler::EnsureTarget(vtkOpenGLRenderWindow* window, int width, 
     this->Target->SetWrapT(vtkTextureObject::ClampToEdge);
     this->Target->SetMinificationFilter(vtkTextureObject::Linear);
     this->Target->SetMagnificationFilter(vtkTextureObject::Linear);
-  }
-  else
-  {
-    this->Target->ReleaseGraphicsResources(window);
   }
   if (!this->Target->Allocate2D(
         static_cast<unsigned int>(width), static_cast<unsigned int>(height), 4, VTK_FLOAT))
@@ -109,6 +119,7 @@ bool vtkAVSImageSampler::Draw(vtkOpenGLRenderWindow* window,
   int height,
   double distance,
   const std::function<void()>& pass,
+  const avs::DisplayTransform& display,
   bool always)
 {
   if ((distance == 1.0 && !always) || !window || width < 1 || height < 1)
@@ -138,7 +149,8 @@ bool vtkAVSImageSampler::Draw(vtkOpenGLRenderWindow* window,
   }
   if (!this->Composite)
   {
-    this->Composite = std::make_unique<vtkOpenGLQuadHelper>(window, nullptr, avs_upsample_fs, "");
+    const std::string fs = vtkAVSShaderAssembly::UpsampleFragmentShader();
+    this->Composite = std::make_unique<vtkOpenGLQuadHelper>(window, nullptr, fs.c_str(), "");
     if (!this->Composite->Program || !this->Composite->Program->GetCompiled())
     {
       this->Composite.reset();
@@ -177,6 +189,11 @@ bool vtkAVSImageSampler::Draw(vtkOpenGLRenderWindow* window,
   window->GetShaderCache()->ReadyShaderProgram(this->Composite->Program);
   this->Target->Activate();
   this->Composite->Program->SetUniformi("u_sampled", this->Target->GetTextureUnit());
+  this->Composite->Program->SetUniformf("u_exposure", static_cast<float>(display.Exposure));
+  this->Composite->Program->SetUniformi(
+    "u_toneMapping", display.Curve == avs::ToneMapping::Shoulder ? 1 : 0);
+  this->Composite->Program->SetUniformf(
+    "u_shoulderStart", static_cast<float>(avs::DisplayTransform::ShoulderStart));
   state->vtkglViewport(x, y, width, height);
   this->Composite->Render();
   this->Target->Deactivate();

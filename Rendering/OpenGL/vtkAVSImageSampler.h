@@ -14,6 +14,7 @@
 #ifndef vtkAVSImageSampler_h
 #define vtkAVSImageSampler_h
 
+#include "DisplayTransform.h"
 #include "vtkSmartPointer.h"
 
 #include <functional>
@@ -38,7 +39,8 @@ public:
   /// width, height) of the bound draw framebuffer. Returns false having drawn nothing when
   /// `distance` is 1 (unless `always`: a volume split into bricks composites its passes in the
   /// target's half floats instead of the framebuffer's 8 bits), or when the target cannot be
-  /// made (with a warning, once); the caller then draws at full resolution.
+  /// made (with a warning, once); the caller then draws at full resolution. The target's linear
+  /// radiance goes through `display` as it is composited.
   bool Draw(vtkOpenGLRenderWindow* window,
     int x,
     int y,
@@ -46,6 +48,7 @@ public:
     int height,
     double distance,
     const std::function<void()>& pass,
+    const avs::DisplayTransform& display,
     bool always = false);
 
   /// Texels of the last target drawn into (rays cast).

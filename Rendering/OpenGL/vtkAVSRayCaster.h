@@ -14,6 +14,7 @@
 #define vtkAVSRayCaster_h
 
 #include "ClipRegion.h"
+#include "DisplayTransform.h"
 #include "Grid.h"
 #include "LightVolume.h"
 #include "Lights.h"
@@ -188,6 +189,10 @@ public:
     bool PeelingFront = false;
     /// Pixels per ray along each axis (vtkAVSImageSampler); 1: one ray per pixel.
     double ImageSampleDistance = 1.0;
+    /// What the framebuffer receives of the volume's linear radiance: the exposure (metered
+    /// where auto exposure is on) and the tone curve (avs_display.glsl), applied once, where
+    /// the ray ends or, for a pass through the image sampler's target, as it is composited.
+    avs::DisplayTransform Display;
   };
 
   /// Draws the volume into the current viewport (the renderer's, or a render pass's). Returns

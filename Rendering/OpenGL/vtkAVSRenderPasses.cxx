@@ -1,7 +1,9 @@
 #include "vtkAVSRenderPasses.h"
 
 #include "vtkAbstractMapper.h"
+#include "vtkCameraPass.h"
 #include "vtkDualDepthPeelingPass.h"
+#include "vtkImageProcessingPass.h"
 #include "vtkInformation.h"
 #include "vtkInformationObjectBaseVectorKey.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -9,7 +11,12 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkProp.h"
+#include "vtkRenderPassCollection.h"
+#include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
+#include "vtkSSAAPass.h"
+#include "vtkSequencePass.h"
+#include "vtkToneMappingPass.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
@@ -29,7 +36,52 @@ vtkOpenGLRenderPass* PassAt(vtkInformation* info, int i)
 {
   return vtkOpenGLRenderPass::SafeDownCast(info->Get(vtkOpenGLRenderPass::RenderPasses(), i));
 }
+// Whether `pass` is, or delegates to, a vtkToneMappingPass (depth-limited against cycles).
+bool HasToneMapping(vtkRenderPass* pass, int depth)
+{
+  if (!pass || depth > 16)
+  {
+    return false;
+  }
+  if (vtkToneMappingPass::SafeDownCast(pass))
+  {
+    return true;
+  }
+  if (auto* camera = vtkCameraPass::SafeDownCast(pass))
+  {
+    return HasToneMapping(camera->GetDelegatePass(), depth + 1);
+  }
+  if (auto* image = vtkImageProcessingPass::SafeDownCast(pass))
+  {
+    return HasToneMapping(image->GetDelegatePass(), depth + 1);
+  }
+  if (auto* ssaa = vtkSSAAPass::SafeDownCast(pass))
+  {
+    return HasToneMapping(ssaa->GetDelegatePass(), depth + 1);
+  }
+  if (auto* steps = vtkRenderStepsPass::SafeDownCast(pass))
+  {
+    return HasToneMapping(steps->GetPostProcessPass(), depth + 1);
+  }
+  if (auto* sequence = vtkSequencePass::SafeDownCast(pass))
+  {
+    vtkRenderPassCollection* passes = sequence->GetPasses();
+    for (int i = 0; passes && i < passes->GetNumberOfItems(); ++i)
+    {
+      if (HasToneMapping(vtkRenderPass::SafeDownCast(passes->GetItemAsObject(i)), depth + 1))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
 } // namespace
+
+bool vtkAVSRenderPasses::UnderToneMapping(vtkRenderer* renderer)
+{
+  return renderer && HasToneMapping(renderer->GetPass(), 0);
+}
 
 vtkAVSRenderPasses::Role vtkAVSRenderPasses::RoleOf(vtkProp* prop, vtkAbstractMapper* mapper)
 {

@@ -19,6 +19,9 @@
  *   accumulation target, which the pass then blends the translucent layers behind, and nothing in
  *   the later calls (Role). The picture is the one the renderer gives without
  *   UseDepthPeelingForVolumes: the volume composited over the translucent geometry.
+ * - Under vtkToneMappingPass (anywhere in the renderer's chain of passes) the pass maps the whole
+ *   picture from its float framebuffer: the volume hands over its radiance linear, with its
+ *   exposure but without its own tone curve, so that nothing is mapped twice (UnderToneMapping).
  * - VTK's passes leave OpenGL errors pending in release builds (glCopyTexImage2D from a
  *   multisampled framebuffer in FXAA and depth peeling, for instance). The ray caster discards
  *   them before its own calls (DiscardErrors) and checks only its own.
@@ -51,6 +54,10 @@ public:
   static void SetShaderParameters(vtkProp* prop,
     vtkAbstractMapper* mapper,
     vtkShaderProgram* program);
+
+  /// Whether a vtkToneMappingPass is among the renderer's passes (its pass, and the delegates and
+  /// sequences below it: camera, image-processing, SSAA, sequence and render-steps passes).
+  static bool UnderToneMapping(vtkRenderer* renderer);
 
   /// Reads and drops the OpenGL errors left pending by others (at most 16); returns how many.
   static int DiscardErrors();

@@ -139,11 +139,19 @@ std::string vtkAVSShaderAssembly::RayCastFragmentShader(avs::RenderMode mode,
   // The compile-time choices go before the first snippet that may test them.
   Replace(fs, "//AVS::Classify::Dec", defines + avs_classify);
   Replace(fs, "//AVS::Lights::Dec", avs_lights);
+  Replace(fs, "//AVS::Display::Dec", avs_display);
   Replace(fs, "//AVS::Clip::Dec", avs_clip);
   Replace(fs, "//AVS::Effect::Dec", dec);
   Replace(fs, "//AVS::Effect::Init", init);
   Replace(fs, "//AVS::Effect::Pair", pair);
   Replace(fs, "//AVS::Effect::Sample", sample);
+  return fs;
+}
+
+std::string vtkAVSShaderAssembly::UpsampleFragmentShader()
+{
+  std::string fs = avs_upsample_fs;
+  Replace(fs, "//AVS::Display::Dec", avs_display);
   return fs;
 }
 

@@ -44,6 +44,9 @@ public:
   /// The ray-casting fragment shader of `mode` with `defines` (RayCastDefines, the clipping's and
   /// the blend mode's); a blend mode other than composite (AVS_BLEND) takes the blend effect.
   static std::string RayCastFragmentShader(avs::RenderMode mode, const std::string& defines);
+  /// The image sampler's compositing fragment shader (avs_upsample_fs.glsl) with the display
+  /// transform.
+  static std::string UpsampleFragmentShader();
 
   /// The averaged-extinction compute shader (avs_average_cs.glsl) with `defines` and the
   /// classification and clipping snippets.

@@ -50,6 +50,12 @@ float HenyeyGreenstein(float mu, float g)
 
 //AVS::Lights::Dec
 
+// DisplayTransform(L): exposure and tone curve (avs_display.glsl), applied where the ray ends
+// unless the pass goes through the image sampler's target, whose compositing applies it to the
+// sum of the bricks' passes (u_displayInRay 0).
+//AVS::Display::Dec
+uniform int u_displayInRay;
+
 // ClipRay, ClipInside, AVS_CROP: clipping planes and cropping (avs_clip.glsl).
 //AVS::Clip::Dec
 
@@ -228,8 +234,13 @@ void main()
   }
 #endif
 #ifdef AVS_EFFECT_OUTPUT
-  gl_FragData[0] = EffectOutput(L, T);
+  vec4 result = EffectOutput(L, T);
 #else
-  gl_FragData[0] = vec4(L, 1.0 - T);
+  vec4 result = vec4(L, 1.0 - T);
 #endif
+  if (u_displayInRay == 1)
+  {
+    result.rgb = DisplayTransform(result.rgb);
+  }
+  gl_FragData[0] = result;
 }

@@ -109,6 +109,17 @@ inline void PlaceTestCamera(vtkCamera* camera)
   camera->SetClippingRange(0.5, 10.0);
 }
 
+/// Linear radiance on the screen (exposure 1, no tone curve), on a mapper or on
+/// vtkVolumeReferenceRenderer: for the tests that measure the physics (light units, the models
+/// against each other, against the truth) rather than the picture the display transform makes
+/// of it.
+template<class T>
+void ShowLinear(T* renderer)
+{
+  renderer->SetExposure(1.0);
+  renderer->SetToneMappingToClamp();
+}
+
 /// The window's RGB picture.
 inline vtkSmartPointer<vtkImageData> Grab(vtkRenderWindow* window)
 {

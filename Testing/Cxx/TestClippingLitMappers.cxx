@@ -15,6 +15,7 @@
 #include "MapperTestScene.h"
 #include "TestErrorObserver.h"
 
+#include "DisplayTransform.h"
 #include "ReferenceRenderer.h"
 #include "vtkAmbientOcclusionVolumeMapper.h"
 #include "vtkAmbientScatteringTable.h"
@@ -91,6 +92,7 @@ int main(int argc, char* argv[])
   ao->SetOcclusionRadius(0.15);
   as->SetAmbientRadius(0.08);
   as->SetAnisotropy(0.4);
+  as->SetAlbedo(0.9);
   vtkAVSVolumeMapper* mappers[3] = { ea, ao, as };
   const char* names[3] = { "ea", "ao", "as" };
   vtkNew<TestErrorObserver> errors;
@@ -259,6 +261,7 @@ int main(int argc, char* argv[])
       p.AmbientRadius = 0.08;
       p.OcclusionRadius = 0.15;
       p.Anisotropy = 0.4;
+      p.Albedo = 0.9;
       const avs::ScatteringParameters resolved = p.Resolve(scene.Scalars.Geometry);
       const avs::RenderMode mode =
         m == 1 ? avs::RenderMode::AmbientOcclusion : avs::RenderMode::AmbientScattering;
@@ -281,7 +284,14 @@ int main(int argc, char* argv[])
         for (int y = 0; y < size; ++y)
           for (int x = 0; x < size; ++x)
           {
-            const avs::Vec3 c = image.Composited(x, y, { 0, 0, 0 });
+            // Through the mapper's display transform (black background).
+            avs::DisplayTransform display;
+            display.Exposure = mappers[m]->GetExposure();
+            display.Curve = mappers[m]->GetToneMapping() == vtkAVSVolumeMapper::ShoulderToneMapping
+              ? avs::ToneMapping::Shoulder
+              : avs::ToneMapping::Clamp;
+            const float* l = image.At(x, y);
+            const avs::Vec3 c = display.Apply({ l[0], l[1], l[2] });
             for (int k = 0; k < 3; ++k)
             {
               rgb->SetTypedComponent(y * size + x,

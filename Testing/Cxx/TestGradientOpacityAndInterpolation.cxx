@@ -157,8 +157,10 @@ int main(int argc, char* argv[])
       std::cout << tag << ": against the CPU reference " << psnr << " dB, against the picture "
                 << "without it " << other << " dB\n";
       AVS_CHECK(errors->Errors == 0);
-      AVS_CHECK(psnr >= 35.0);
-      AVS_CHECK(other < 35.0); // ignored on the GPU alone, the line above fails
+      // Measured 59.5-71 dB against the CPU reference (llvmpipe), 21-38 dB against the picture
+      // without the setting: a GPU that ignored the setting would sit at the latter.
+      AVS_CHECK(psnr >= 55.0);
+      AVS_CHECK(other < 45.0);
       mapper->RemoveObserver(errors);
     }
   }

@@ -1,7 +1,8 @@
 // VTK light units (ALGORITHM.md section 1): a vtkLight of intensity 1 on an optically thin,
 // white, isotropic medium of albedo 1 returns the emission-absorption colour, in the CPU
 // reference and in the GPU mappers; LightScale multiplies every light; AO's direct light of
-// weight 1 is the unshadowed single scattering of the same lights (the EA colour here).
+// weight 1 is the unshadowed single scattering of the same lights (the EA colour here). Linear
+// radiance on the screen (ShowLinear): these are the physics' units, not the display's.
 #include "MapperTestScene.h"
 #include "TestErrorObserver.h"
 #include "vtkAmbientOcclusionVolumeMapper.h"
@@ -79,6 +80,7 @@ double Reference(int mode, double lightScale, double directWeight = 0.0)
   reference->SetLightScale(lightScale);
   reference->SetAmbientWeight(directWeight > 0 ? 0.0 : 1.0);
   reference->SetDirectLightWeight(directWeight);
+  ShowLinear(reference.Get());
   reference->Update();
   return Brightness(reference->GetOutput());
 }
@@ -87,6 +89,7 @@ double Mapper(vtkAVSVolumeMapper* mapper, TestErrorObserver* errors)
 {
   mapper->SetInputData(ThinCube());
   mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+  ShowLinear(mapper);
   vtkNew<vtkRenderWindow> window;
   PrepareTestWindow(window, 32, 32);
   vtkNew<vtkRenderer> renderer;

@@ -75,6 +75,7 @@ int main(int argc, char* argv[])
     vtkNew<vtkAmbientScatteringVolumeMapper> mapper;
     AVS_CHECK(mapper->GetScatteringModel() == vtkAmbientScatteringVolumeMapper::ExtendedModel);
     mapper->SetScatteringModelToPaper();
+    ShowLinear(mapper.Get()); // the models' radiance, not the display's compression of it
     mapper->SetInputData(data);
     Scene scene(mapper);
     scene.Render();

@@ -377,8 +377,11 @@ int main(int, char*[])
     vtkNew<vtkAmbientScatteringVolumeMapper> mapper;
     mapper->AutoAdjustSampleDistancesOff();
     // Dimmed so that no ray saturates: the offscreen target keeps radiance above 1, which the
-    // 8-bit 120^2 picture clamps ray by ray before the means are taken.
+    // 8-bit 120^2 picture clamps ray by ray before the means are taken. (Linear on the screen:
+    // the shoulder of the tone curve is not linear either.)
     mapper->SetLightScale(0.6);
+    mapper->SetAlbedo(0.9);
+    ShowLinear(mapper.Get());
     Scene fine(mapper, data, 120);
     AddTestLights(fine.Renderer);
     const auto full = fine.Render();

@@ -224,6 +224,7 @@ struct Scene
   vtkNew<TestErrorObserver> Errors;
   Setup Kind;
   Variant Which;
+  int Curve = -1; ///< the mapper's tone curve (tone mapping)
 
   Scene(vtkVolumeMapper* mapper,
     vtkVolumeProperty* property,
@@ -301,6 +302,18 @@ struct Scene
   vtkSmartPointer<vtkImageData> Render(bool on, bool withVolume)
   {
     this->Switch(on);
+    // Under vtkToneMappingPass a mapper hands over its radiance without its own tone curve; the
+    // reference (the picture without the pass, mapped here as the pass maps it) is that
+    // radiance too. (TestDisplayTransform checks that the curve is left out under the pass.)
+    auto* ours = vtkAVSVolumeMapper::SafeDownCast(this->Volume->GetMapper());
+    if (ours && this->Kind == Setup::ToneMapping)
+    {
+      if (this->Curve < 0)
+      {
+        this->Curve = ours->GetToneMapping();
+      }
+      ours->SetToneMapping(on ? this->Curve : vtkAVSVolumeMapper::ClampToneMapping);
+    }
     this->Volume->SetVisibility(withVolume);
     this->Window->Render();
     return GrabRGBA(this->Window);

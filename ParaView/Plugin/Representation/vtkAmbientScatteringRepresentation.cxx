@@ -63,6 +63,36 @@ double vtkAmbientScatteringRepresentation::GetAlbedo()
   return this->AmbientScatteringMapper->GetAlbedo();
 }
 
+void vtkAmbientScatteringRepresentation::SetExposure(double exposure)
+{
+  this->AmbientScatteringMapper->SetExposure(exposure);
+}
+
+double vtkAmbientScatteringRepresentation::GetExposure()
+{
+  return this->AmbientScatteringMapper->GetExposure();
+}
+
+void vtkAmbientScatteringRepresentation::SetToneMapping(int curve)
+{
+  this->AmbientScatteringMapper->SetToneMapping(curve);
+}
+
+int vtkAmbientScatteringRepresentation::GetToneMapping()
+{
+  return this->AmbientScatteringMapper->GetToneMapping();
+}
+
+void vtkAmbientScatteringRepresentation::SetAutoExposure(int on)
+{
+  this->AmbientScatteringMapper->SetAutoExposure(on);
+}
+
+int vtkAmbientScatteringRepresentation::GetAutoExposure()
+{
+  return this->AmbientScatteringMapper->GetAutoExposure();
+}
+
 void vtkAmbientScatteringRepresentation::SetScatteringAnisotropy(double g)
 {
   this->AmbientScatteringMapper->SetAnisotropy(g);
@@ -229,6 +259,10 @@ void vtkAmbientScatteringRepresentation::PrintSelf(ostream& os, vtkIndent indent
   };
   os << indent << "LightingModel: " << names[this->LightingModel] << "\n";
   os << indent << "Albedo: " << this->GetAlbedo() << "\n";
+  os << indent << "Exposure: " << this->GetExposure() << "\n";
+  os << indent << "ToneMapping: " << this->AmbientScatteringMapper->GetToneMappingAsString()
+     << "\n";
+  os << indent << "AutoExposure: " << (this->GetAutoExposure() ? "On" : "Off") << "\n";
   os << indent << "ScatteringAnisotropy: " << this->GetScatteringAnisotropy() << "\n";
   os << indent << "AmbientRadius: " << this->GetAmbientRadius() << "\n";
   os << indent << "LightScale: " << this->GetLightScale() << "\n";

@@ -57,10 +57,25 @@ public:
 
   ///@{
   /**
-   * Scattering albedo in [0, 1] (ambient scattering). Default 0.9.
+   * Scattering albedo in [0, 1] (ambient scattering). Default 0.8.
    */
   void SetAlbedo(double albedo);
   double GetAlbedo();
+  ///@}
+
+  ///@{
+  /**
+   * The display transform of ambient scattering (vtkAVSVolumeMapper::SetExposure,
+   * SetToneMapping, SetAutoExposure): the exposure factor (default 0.5), the tone curve (0 clamp,
+   * 1 the shoulder, the default) and auto exposure from the light the volume receives (default
+   * off). The emission-absorption and ambient-occlusion models keep the identity.
+   */
+  void SetExposure(double exposure);
+  double GetExposure();
+  void SetToneMapping(int curve);
+  int GetToneMapping();
+  void SetAutoExposure(int on);
+  int GetAutoExposure();
   ///@}
 
   ///@{
