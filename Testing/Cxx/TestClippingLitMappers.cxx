@@ -175,7 +175,9 @@ int main(int argc, char* argv[])
         Write(gpu, dir + "/cliplit_" + tag + "_gpu.png");
         Write(cpu, dir + "/cliplit_" + tag + "_cpu.png");
         AVS_CHECK(Brightness(gpu) > 1000.0);
-        AVS_CHECK(psnr >= 35.0);
+        // Measured 68.3-73.3 dB (EA, AO, ambient scattering, both cuts, compute shaders and the
+        // OpenGL 4.1 run): 62 dB leaves about 6 dB for another driver.
+        AVS_CHECK(psnr >= 62.0);
         AVS_CHECK(matters < 33.0);
         if (m == 2)
         {

@@ -219,7 +219,9 @@ int main(int argc, char* argv[])
     std::cout << tag << ": EA against VTK " << psnr << " dB";
     AVS_CHECK(errors->Errors == 0);
     AVS_CHECK(Brightness(picture) > 1000.0);
-    AVS_CHECK(psnr >= 35.0);
+    // Measured against VTK 9.1's mapper: 54.2-67.7 dB (dependent four components the lowest,
+    // their colour interpolated before the classification in both); 48 dB leaves about 6 dB.
+    AVS_CHECK(psnr >= 48.0);
     // What a mapper that ignored the components would draw: component 0 alone, with component
     // 0's functions.
     ea->SelectScalarArray(c.IgnoredArray);
@@ -317,7 +319,9 @@ int main(int argc, char* argv[])
       std::cout << tag << ": against the CPU reference " << psnr << " dB\n";
       AVS_CHECK(errors->Errors == 0);
       AVS_CHECK(Brightness(picture) > 1000.0);
-      AVS_CHECK(psnr >= 35.0);
+      // Measured 69.3-78.4 dB (AO, ambient scattering on the GPU and with the precomputation on
+      // the CPU): 63 dB leaves about 6 dB for another driver.
+      AVS_CHECK(psnr >= 63.0);
       mapper->RemoveObserver(errors);
     }
   }

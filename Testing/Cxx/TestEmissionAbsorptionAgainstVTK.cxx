@@ -66,7 +66,10 @@ int main(int argc, char* argv[])
               << " dB (brightness VTK " << Brightness(pictures[0]) << ", ours "
               << Brightness(pictures[1]) << ")\n";
     AVS_CHECK(Brightness(pictures[0]) > 1000.0);
-    AVS_CHECK(psnr >= 35.0);
+    // Measured against VTK 9.1's mapper: 63.9 dB in perspective, 62.0 in parallel projection;
+    // 55 dB leaves room for another driver's rounding, not for a 5 % brightness error (Exposure
+    // 1.05: 37.5 and 35.7 dB, which the former 35 dB passed).
+    AVS_CHECK(psnr >= 55.0);
   }
   AVS_CHECK(errors->Errors == 0);
   if (failures)

@@ -143,9 +143,21 @@ int main(int argc, char* argv[])
       {
         AVS_CHECK(asx->GetNumberOfDiffusionRebuilds() >= 1);
       }
-      if (m == 2 && std::getenv("AVS_EXPECT_CPU_PRECOMPUTATION"))
+      // Which path computed the precomputed volumes: the GPU's where the context has compute
+      // shaders (else the comparison below is of the CPU code with itself), the CPU's in the
+      // OpenGL 4.1 run (the context really has none).
+      const bool gpuExpected = std::getenv("AVS_EXPECT_CPU_PRECOMPUTATION") == nullptr;
+      if (m == 1)
       {
-        AVS_CHECK(!as->GetLightVolumesOnGPU()); // the context really has no compute shaders
+        AVS_CHECK(ao->GetOcclusionOnGPU() == (gpuExpected ? 1 : 0));
+      }
+      else if (m == 2)
+      {
+        AVS_CHECK(as->GetLightVolumesOnGPU() == (gpuExpected ? 1 : 0));
+      }
+      else if (m == 3)
+      {
+        AVS_CHECK(asx->GetLightVolumesOnGPU() == (gpuExpected ? 1 : 0));
       }
 
       vtkNew<vtkVolumeReferenceRenderer> reference;
@@ -181,7 +193,11 @@ int main(int argc, char* argv[])
         writer->Write();
       }
       AVS_CHECK(Brightness(gpu) > 1000.0);
-      AVS_CHECK(psnr >= 35.0);
+      // Measured on llvmpipe: EA 60.5-66.7 dB, AO 62.7-69.1, ambient scattering 61.8-71.7 (both
+      // the compute-shader and the OpenGL 4.1 run). 55 dB leaves about 5 dB (under twice the RMS
+      // error) for another driver's rounding; EA 5 % too bright (Exposure 1.05) measures
+      // 30.0-37.5 dB on these pictures and fails (the former 35 dB passed two of the views).
+      AVS_CHECK(psnr >= 55.0);
       if (m >= 2 && view < 3)
       {
         // Ambient scattering reads its lights once per pair of samples here (their midpoint;

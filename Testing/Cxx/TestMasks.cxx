@@ -132,7 +132,9 @@ int main(int argc, char* argv[])
     std::cout << tag << ": EA against VTK " << psnr << " dB, against no mask " << other << " dB\n";
     AVS_CHECK(errors->Errors == 0);
     AVS_CHECK(Brightness(picture) > 1000.0);
-    AVS_CHECK(psnr >= 35.0);
+    // Measured against VTK 9.1's mapper: 50.3-57.7 dB (the masks' nearest-sample edges differ by
+    // a voxel here and there); 45 dB leaves about 5 dB.
+    AVS_CHECK(psnr >= 45.0);
     AVS_CHECK(c.SameAsUnmasked ? other > 80.0 : other < 30.0);
   }
   // A binary mask in a vtkBitArray (which vtkTemplateMacro does not cover) masks as the same
@@ -231,7 +233,8 @@ int main(int argc, char* argv[])
       std::cout << tag << ": against the CPU reference " << psnr << " dB, against no mask " << other
                 << " dB\n";
       AVS_CHECK(mapperErrors->Errors == 0);
-      AVS_CHECK(psnr >= 35.0);
+      // Measured 72.9-75.9 dB (AO, ambient scattering): 66 dB leaves about 6 dB.
+      AVS_CHECK(psnr >= 66.0);
       AVS_CHECK(other < 35.0);
       mapper->RemoveObserver(mapperErrors);
     }

@@ -90,9 +90,12 @@ TEST(DiffuseFluence, NestedDefaultSweepsConvergeOnDenseAndThinBalls)
   // 64 cells across (the study's clouds on their grid), lit from one side, from optical radius
   // about 60 down to 0.3: the thinner the ball, the further the light diffuses (up to the flux
   // limiter's D) and the more sweeps one grid needs. The nested solve with the default sweeps
-  // (8 on the finest level, 24 on each coarser one) is within 3 % of the converged fluence on
-  // all of them (0.8, 1.0 and 2.0 %); 8 sweeps on the finest grid alone are 14-88 % off. (The
-  // residual stays large on the thin balls' rims, where phi is already right.)
+  // (8 on the finest level, 24 on each coarser one) measures 0.84, 1.02 and 1.99 % off the
+  // converged fluence (optical radius 57, 1.9, 0.3); 8 sweeps on the finest grid alone are
+  // 14-88 % off. Each ball is held to its measurement plus a tenth (the sweeps were cut from 12
+  // and 32 for speed, which cost the thinnest ball 0.4 points: the bound is the measured error of
+  // the defaults, not a window). (The residual stays large on the thin balls' rims, where phi is
+  // already right.)
   const GridGeometry g = Box(64, 2.0 / 63.0);
   Light light;
   light.Type = LightType::Directional;
@@ -105,7 +108,8 @@ TEST(DiffuseFluence, NestedDefaultSweepsConvergeOnDenseAndThinBalls)
     tube.Values[i] = i % 64 < 20 ? 1.0f : 0.0f;
   }
   const std::vector<Grid> tubes{ tube };
-  for (double density : { 60.0, 2.0, 0.3 })
+  const std::pair<double, double> cases[] = { { 60.0, 0.0093 }, { 2.0, 0.0112 }, { 0.3, 0.022 } };
+  for (const auto& [density, bound] : cases)
   {
     DiffusionSettings s;
     s.Albedo = 0.95;
@@ -132,7 +136,7 @@ TEST(DiffuseFluence, NestedDefaultSweepsConvergeOnDenseAndThinBalls)
       density * 30.0 * 2.0 / 63.0,
       error(nested),
       error(flat));
-    EXPECT_LT(error(nested), 0.03) << density;
+    EXPECT_LT(error(nested), bound) << density;
     if (density < 10.0)
     {
       EXPECT_GT(error(flat), 0.2) << density;
