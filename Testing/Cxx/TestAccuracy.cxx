@@ -2,10 +2,16 @@
 // own noise is measured and must stay well below the differences tested). What holds with the
 // default parameters, and is asserted here:
 // - on the study's four scenes (clouds of optical thickness about 27 lit from behind and from
-//   the side, a nebula with a point light inside, a dense medical-like volume) ambient
-//   scattering is closer to the truth than EA and AO;
-// - so it is on an optically thin cloud (about 2.6 across, --cloud-opacity 0.08), lit from
-//   behind and from the side.
+//   the side, a nebula with a point light inside, a dense medical-like volume) both models of
+//   ambient scattering, the default extended one (asx) and the paper's (as), are closer to the
+//   truth than EA and AO;
+// - so they are on an optically thin cloud (about 2.6 across, --cloud-opacity 0.08), lit from
+//   behind and from the side;
+// - and each model's RMSE is bounded on every scene: at most 1.2 times what it measured when the
+//   bound was set (llvmpipe, Debian 12; the table below). The path tracer is deterministic for
+//   its seed and the mappers for a driver, so the bound's fifth is room for another driver's
+//   arithmetic, not for noise: a model that got a fifth worse anywhere fails, where the ranking
+//   alone let ambient scattering get up to 14x worse on the nebula and still pass.
 // README.md ("Accuracy against the truth") gives the full-size figures and where ambient
 // scattering does not win (side-lit clouds of intermediate thickness).
 #include "AccuracyStudy.h"
@@ -41,18 +47,61 @@ std::map<std::string, AccuracyResult> Measure(const AccuracySettings& settings)
 
 void ExpectBetter(std::map<std::string, AccuracyResult>& results,
   const std::string& scene,
-  const std::string& other)
+  const std::string& other,
+  const std::string& model)
 {
-  const double as = results[scene + "/as"].Rmse, o = results[scene + "/" + other].Rmse;
-  const double noise = results[scene + "/as"].TruthNoise;
+  const double as = results[scene + "/" + model].Rmse, o = results[scene + "/" + other].Rmse;
+  const double noise = results[scene + "/" + model].TruthNoise;
   // The truth's own noise adds to both errors alike (in quadrature); it must be small against
   // the errors compared.
   if (!(as < o) || !(noise < 0.25 * o))
   {
-    std::cerr << scene << ": ambient scattering " << as << " not clearly below " << other << " "
-              << o << " (noise " << noise << ")\n";
+    std::cerr << scene << ": ambient scattering (" << model << ") " << as << " not clearly below "
+              << other << " " << o << " (noise " << noise << ")\n";
     ++failures;
   }
+}
+/// RMSE measured when the bounds were set (48^2, 48^3, 128 and 256 paths), extended and paper.
+struct Measured
+{
+  const char* Scene;
+  double Opacity;
+  double Extended, Paper;
+};
+const Measured Today[] = {
+  { "cloud_back", 0.6, 0.0347, 0.0501 },
+  { "cloud_side", 0.6, 0.0504, 0.1626 },
+  { "nebula_point", 0.6, 0.0109, 0.0161 },
+  { "dense_medical", 0.6, 0.0567, 0.0813 },
+  { "cloud_back", 0.08, 0.0256, 0.0460 },
+  { "cloud_side", 0.08, 0.0262, 0.0601 },
+};
+
+void ExpectBounded(std::map<std::string, AccuracyResult>& results,
+  const std::string& scene,
+  double opacity)
+{
+  for (const Measured& m : Today)
+  {
+    if (scene != m.Scene || opacity != m.Opacity)
+    {
+      continue;
+    }
+    for (const auto& [model, measured] :
+      { std::make_pair("asx", m.Extended), std::make_pair("as", m.Paper) })
+    {
+      const double rmse = results[scene + "/" + model].Rmse;
+      if (!(rmse <= 1.2 * measured))
+      {
+        std::cerr << scene << " (cloud opacity " << opacity << "): " << model << " RMSE " << rmse
+                  << " above 1.2 x the " << measured << " measured\n";
+        ++failures;
+      }
+    }
+    return;
+  }
+  std::cerr << scene << ": no bound\n";
+  ++failures;
 }
 } // namespace
 
@@ -66,8 +115,12 @@ int main(int, char*[])
   auto study = Measure(settings);
   for (const std::string& scene : settings.Scenes)
   {
-    ExpectBetter(study, scene, "ea");
-    ExpectBetter(study, scene, "ao");
+    for (const char* model : { "asx", "as" })
+    {
+      ExpectBetter(study, scene, "ea", model);
+      ExpectBetter(study, scene, "ao", model);
+    }
+    ExpectBounded(study, scene, settings.CloudOpacity);
   }
 
   // The thin cloud: twice the paths, since the differences are smaller.
@@ -77,8 +130,12 @@ int main(int, char*[])
   auto thin = Measure(settings);
   for (const std::string& scene : settings.Scenes)
   {
-    ExpectBetter(thin, scene, "ea");
-    ExpectBetter(thin, scene, "ao");
+    for (const char* model : { "asx", "as" })
+    {
+      ExpectBetter(thin, scene, "ea", model);
+      ExpectBetter(thin, scene, "ao", model);
+    }
+    ExpectBounded(thin, scene, settings.CloudOpacity);
   }
 
   // Settings the study refuses, before rendering anything.
