@@ -89,6 +89,7 @@ int main(int, char*[])
   filter->SetInputData(Ball());
 
   double sums[3];
+  double lit[3], shaded[3]; // radiance of the ball's half towards the light, and the other half
   for (int mode = 0; mode < 3; ++mode)
   {
     filter->SetRenderMode(mode);
@@ -104,6 +105,42 @@ int main(int, char*[])
     // Background corners stay black; the centre shows the ball.
     AVS_CHECK(out->GetScalarComponentAsDouble(0, 0, 0, 0) == 0.0);
     AVS_CHECK(out->GetScalarComponentAsDouble(16, 12, 0, 0) > 0.0);
+    // The light comes from the upper left (x < 0, y > 0 on the screen).
+    vtkDataArray* radiance = out->GetPointData()->GetArray("Radiance");
+    lit[mode] = shaded[mode] = 0.0;
+    for (int y = 0; y < 24; ++y)
+      for (int x = 0; x < 32; ++x)
+      {
+        const double r = radiance->GetComponent(y * 32 + x, 0);
+        (x - 16 < y - 12 ? lit[mode] : shaded[mode]) += r;
+      }
+  }
+  // The modes against each other, each doing what it names: EA knows no light, AO only darkens
+  // EA (every pixel) and knows no light either (its halves as EA's, which differ a little with
+  // the 32 x 24 picture's aspect), ambient scattering is brighter on the lit half (measured: EA
+  // 0.82, AO 0.82, AS 1.21).
+  std::cout << "sums EA " << sums[0] << ", AO " << sums[1] << ", AS " << sums[2]
+            << "; lit / shaded half: EA " << lit[0] / shaded[0] << ", AO " << lit[1] / shaded[1]
+            << ", AS " << lit[2] / shaded[2] << "\n";
+  const double ea = lit[0] / shaded[0], ao = lit[1] / shaded[1], as = lit[2] / shaded[2];
+  AVS_CHECK(std::abs(ao / ea - 1.0) < 0.05);
+  AVS_CHECK(as / ea > 1.3);
+  AVS_CHECK(sums[1] < 0.95 * sums[0]);
+  {
+    filter->SetRenderModeToEmissionAbsorption();
+    filter->Update();
+    vtkNew<vtkImageData> ea;
+    ea->DeepCopy(filter->GetOutput());
+    filter->SetRenderModeToAmbientOcclusion();
+    filter->Update();
+    vtkDataArray* a = ea->GetPointData()->GetArray("Radiance");
+    vtkDataArray* b = filter->GetOutput()->GetPointData()->GetArray("Radiance");
+    int darker = 0;
+    for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+    {
+      darker += b->GetComponent(i, 0) <= a->GetComponent(i, 0) + 1e-6 ? 1 : 0;
+    }
+    AVS_CHECK(darker == a->GetNumberOfTuples());
   }
   // The extent's lower corner places the volume: the same ball with extent starting at -12 and
   // the origin moved back by 12 voxels renders the same picture.

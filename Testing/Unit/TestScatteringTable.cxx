@@ -220,11 +220,11 @@ TEST(ScatteringTable, LoaderRejectsBrokenFiles)
   ASSERT_TRUE(t.ReadFromMemory(bytes, &error)) << error;
 
   rejects({}, "too short");
-  // Truncated anywhere: in the header, in the data, by one byte.
+  // Truncated anywhere: in the header (each says so), in the data, by one byte.
   for (std::size_t keep : { std::size_t(20), std::size_t(60), bytes.size() / 2, bytes.size() - 1 })
   {
     rejects(std::vector<unsigned char>(bytes.begin(), bytes.begin() + keep),
-      keep < 100 ? "" : "truncated");
+      keep < 100 ? "truncated header" : "truncated");
   }
   auto corrupted = bytes;
   corrupted[bytes.size() / 2] ^= 0x5a;
