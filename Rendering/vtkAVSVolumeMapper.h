@@ -358,8 +358,9 @@ public:
   /**
    * The GPU memory budget of this mapper's volume textures (the same textures
    * GetGPUMemoryBytes counts), in MiB. 0 (default): what the OpenGL context reports
-   * (GL_NVX_gpu_memory_info's dedicated video memory, or GL_ATI_meminfo's free texture memory),
-   * and no limit where it reports nothing; the environment variable AVS_GPU_MEMORY_LIMIT_MB,
+   * (GL_NVX_gpu_memory_info's dedicated video memory, its total available memory on a device
+   * with unified memory, or GL_ATI_meminfo's free texture memory), and no limit where it
+   * reports nothing (or less than 64 MiB); the environment variable AVS_GPU_MEMORY_LIMIT_MB,
    * where set, limits it further. A texture that would take the volume past the budget is
    * refused before anything is allocated: the render reports an error naming the sizes and the
    * budget, draws nothing, and releases what the volume held. The bricks of a split volume (see

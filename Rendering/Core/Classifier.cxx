@@ -35,8 +35,9 @@ double MaximumExtinction(const TransferFunction& tf, double unitDistance, double
     const double step = (tf.Maximum - tf.Minimum) / (n - 1);
     const double a = std::clamp((lo - tf.Minimum) / step, 0.0, static_cast<double>(n - 1));
     const double b = std::clamp((hi - tf.Minimum) / step, 0.0, static_cast<double>(n - 1));
-    for (std::size_t i = static_cast<std::size_t>(std::ceil(a)); i <= static_cast<std::size_t>(b);
-         ++i)
+    const std::size_t first = static_cast<std::size_t>(std::ceil(a));
+    const std::size_t last = static_cast<std::size_t>(b);
+    for (std::size_t i = first; i <= last; ++i)
     {
       alpha = std::max(alpha, static_cast<double>(tf.Opacity[i]));
     }

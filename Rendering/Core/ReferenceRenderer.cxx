@@ -161,6 +161,12 @@ namespace
 // The most samples one ray takes.
 constexpr int MaximumRaySamples = 1 << 26;
 
+// A local-frame point or direction in index units (component-wise division by the spacing).
+Vec3 InIndexUnits(const Vec3& local, const Vec3& spacing)
+{
+  return { local.x / spacing.x, local.y / spacing.y, local.z / spacing.z };
+}
+
 // One ray, front to back. Returns premultiplied L and alpha.
 void CastRay(const VolumeScene& scene,
   const Classifier& classifier,
@@ -182,10 +188,8 @@ void CastRay(const VolumeScene& scene,
   t0 = std::max(t0, 0.0); // camera inside the volume
   // Clipping planes and the kept cropping regions' box shorten the ray (as on the GPU).
   const Vec3& spacing = geometry.Spacing;
-  auto toIndex = [&](const Vec3& local) {
-    return Vec3{ local.x / spacing.x, local.y / spacing.y, local.z / spacing.z };
-  };
-  if (scene.Clip.Clips() && !scene.Clip.ClipRay(toIndex(o), toIndex(d), t0, t1))
+  if (scene.Clip.Clips() &&
+    !scene.Clip.ClipRay(InIndexUnits(o, spacing), InIndexUnits(d, spacing), t0, t1))
   {
     return;
   }
@@ -210,7 +214,7 @@ void CastRay(const VolumeScene& scene,
     const Classified c = classifier.AtLocal(x);
     sigmaT = c.SigmaT;
     color = c.Color;
-    if (scene.Clip.Clips() && !scene.Clip.IsInside(toIndex(x)))
+    if (scene.Clip.Clips() && !scene.Clip.IsInside(InIndexUnits(x, spacing)))
     {
       sigmaT = 0.0; // clipped or cropped away
     }

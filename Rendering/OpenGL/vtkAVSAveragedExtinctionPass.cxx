@@ -5,10 +5,10 @@
 #include "vtkAVSShaderOptions.h"
 #include "vtkAVSVolumeTextures.h"
 
+#include "vtkAVSOpenGL.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <cmath>

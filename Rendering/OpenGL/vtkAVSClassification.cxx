@@ -3,9 +3,9 @@
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSTextureUpload.h"
 
+#include "vtkAVSOpenGL.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 

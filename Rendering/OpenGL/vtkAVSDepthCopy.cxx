@@ -2,11 +2,11 @@
 
 #include "vtkAVSRenderPasses.h"
 
+#include "vtkAVSOpenGL.h"
 #include "vtkObject.h" // for vtkGenericWarningMacro
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
-#include "vtk_glew.h"
 
 vtkAVSDepthCopy::vtkAVSDepthCopy() = default;
 

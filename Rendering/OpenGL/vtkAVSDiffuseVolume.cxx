@@ -7,11 +7,11 @@
 #include "vtkAVSTextureMemory.h"
 #include "vtkAVSTextureUpload.h"
 
+#include "vtkAVSOpenGL.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,6 +4,7 @@
 
 #include "ImageSampleDistance.h"
 
+#include "vtkAVSOpenGL.h"
 #include "vtkObject.h" // vtkOpenGLError.h uses vtkObject without including it
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -13,7 +14,6 @@
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <string>

@@ -4,10 +4,10 @@
 #include "vtkAVSShaderAssembly.h"
 #include "vtkAVSVolumeTextures.h"
 
+#include "vtkAVSOpenGL.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <array>
 #include <functional>

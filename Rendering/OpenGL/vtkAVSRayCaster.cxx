@@ -5,6 +5,7 @@
 #include "vtkAVSShaderAssembly.h"
 #include "vtkAVSTextureMemory.h"
 
+#include "vtkAVSOpenGL.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
@@ -13,7 +14,6 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <cmath>

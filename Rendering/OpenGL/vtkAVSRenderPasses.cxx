@@ -1,5 +1,6 @@
 #include "vtkAVSRenderPasses.h"
 
+#include "vtkAVSOpenGL.h"
 #include "vtkAbstractMapper.h"
 #include "vtkCameraPass.h"
 #include "vtkDualDepthPeelingPass.h"
@@ -17,7 +18,6 @@
 #include "vtkSSAAPass.h"
 #include "vtkSequencePass.h"
 #include "vtkToneMappingPass.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <string>

@@ -4,8 +4,8 @@
 #include "vtkAVSShaders.h"
 #include "vtkAVSVolumeTextures.h"
 
+#include "vtkAVSOpenGL.h"
 #include "vtkObject.h" // for vtkGenericWarningMacro
-#include "vtk_glew.h"
 
 #include <algorithm>
 

@@ -1,8 +1,8 @@
 #include "vtkAVSShaderOptions.h"
 
+#include "vtkAVSOpenGL.h"
 #include "vtkShaderProgram.h"
 #include "vtkVolumeMapper.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 

@@ -1,8 +1,8 @@
 #include "vtkAVSTextureMemory.h"
 
+#include "vtkAVSOpenGL.h"
 #include "vtkTextureObject.h"
 #include "vtkType.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -137,17 +137,25 @@ double vtkAVSTextureMemory::ReportedBytes()
     }
     return false;
   };
+  // A device with unified memory (an integrated GPU; Mesa's llvmpipe from Mesa 25 on) reports
+  // almost no dedicated memory (a few KiB) through NVX and none free through ATI: there the
+  // total available memory counts, and a report below 64 MiB is taken as no report at all.
+  constexpr GLint plausibleKiB = 64 * 1024;
   GLint kib[4] = { 0, 0, 0, 0 };
   if (supported("GL_NVX_gpu_memory_info"))
   {
     glGetIntegerv(0x9047, kib); // GPU_MEMORY_INFO_DEDICATED_VIDMEM_NVX
+    if (kib[0] < plausibleKiB)
+    {
+      glGetIntegerv(0x9048, kib); // GPU_MEMORY_INFO_TOTAL_AVAILABLE_MEMORY_NVX
+    }
   }
-  else if (supported("GL_ATI_meminfo"))
+  if (kib[0] < plausibleKiB && supported("GL_ATI_meminfo"))
   {
     glGetIntegerv(0x87FC, kib); // TEXTURE_FREE_MEMORY_ATI: total free, largest block, ...
   }
   for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
   {
   }
-  return kib[0] > 0 ? kib[0] * 1024.0 : 0.0;
+  return kib[0] >= plausibleKiB ? kib[0] * 1024.0 : 0.0;
 }

@@ -29,7 +29,9 @@ public:
   static double LimitBytes();
 
   /// The GPU memory the current context reports, in bytes: GL_NVX_gpu_memory_info's dedicated
-  /// video memory, or GL_ATI_meminfo's free texture memory; 0 where it reports neither.
+  /// video memory (its total available memory on a device with unified memory, which reports
+  /// almost no dedicated memory), or GL_ATI_meminfo's free texture memory; 0 where it reports
+  /// none of them, or less than 64 MiB.
   static double ReportedBytes();
 
   /// The budget of the mapper whose frame is being prepared and drawn

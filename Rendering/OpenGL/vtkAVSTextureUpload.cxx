@@ -3,8 +3,8 @@
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSTextureMemory.h"
 
+#include "vtkAVSOpenGL.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <limits>

@@ -5,7 +5,7 @@
 #include "vtkAVSTextureMemory.h"
 #include "vtkAVSTextureUpload.h"
 
-#include "vtk_glew.h"
+#include "vtkAVSOpenGL.h"
 
 #include <algorithm>
 #include <cmath>

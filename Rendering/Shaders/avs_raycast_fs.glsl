@@ -81,17 +81,18 @@ vec3 VolumeCoordinate(vec3 index)
 #endif
 
 // The ray's values, shared by main and RaySample (a function, so that a loop may take two
-// samples per iteration without a second copy of the sample's code).
-vec3 origin, direction; // world ray
-vec3 io, id;            // index(t) = io + t * id for world distance t
-float t0, dtWorld, dt, offset;
-int steps;
+// samples per iteration without a second copy of the sample's code). main sets them all before
+// the first sample; the initial values only tell the compiler so.
+vec3 origin = vec3(0.0), direction = vec3(0.0); // world ray
+vec3 io = vec3(0.0), id = vec3(0.0);            // index(t) = io + t * id for world distance t
+float t0 = 0.0, dtWorld = 0.0, dt = 0.0, offset = 0.0;
+int steps = 0;
 #ifdef AVS_BRICKED
-int brickFirst;
+int brickFirst = 0;
 #endif
-vec3 firstCoordinate, stepCoordinate;
-vec3 L;  // radiance so far
-float T; // transmittance so far
+vec3 firstCoordinate = vec3(0.0), stepCoordinate = vec3(0.0);
+vec3 L = vec3(0.0);  // radiance so far
+float T = 1.0; // transmittance so far
 
 //AVS::Effect::Dec
 

@@ -1,7 +1,7 @@
 // Clipping planes and cropping of vtkEmissionAbsorptionVolumeMapper against VTK's own
 // vtkGPUVolumeRayCastMapper (unshaded, same sample distance, no jittering): 1, 3 and 6 planes,
 // planes with a rotated, scaled and moved vtkVolume, VTK's cropping presets and other region
-// flags, and cropping with planes. Each case: PSNR >= 35 dB against VTK's picture, and VTK's
+// flags, and cropping with planes. Each case: PSNR >= 52 dB against VTK's picture, and VTK's
 // clipped picture differs from its unclipped one, so that a mapper ignoring the
 // setting would fail (VTK's clipped picture against its unclipped one: < 33 dB).
 #include "MapperTestScene.h"
@@ -13,6 +13,7 @@
 #include "vtkPNGWriter.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
+#include "vtkVersionMacros.h"
 
 #include <algorithm>
 #include <functional>
@@ -44,8 +45,18 @@ struct Case
 // where the planes are (the CPU reference and the path tracer agree). For the comparison, VTK's
 // mapper is handed the planes moved towards the centre by that factor, which puts its effective
 // planes where ours are; `world` maps data to world (the volume's matrix).
+//
+// VTK changed, not ours: from VTK 9.3 its mapper clips where the clipping planes are (k = 1 for
+// planes; cropping keeps k = (N - 1) / N). Handed the 9.1 correction, VTK 9.6 measured 34.8-52.3
+// dB against our unchanged pictures (planes6, planes3, plane1); without it, 57.7-62.7 dB, what
+// VTK 9.1 measures with it. Its cropping without the correction measured 38-49 dB.
 constexpr double Points = 40.0; // MakeTestVolume(40): 40 points on every axis
-constexpr double K = (Points - 1.0) / Points;
+constexpr double K = (Points - 1.0) / Points; // cropping
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
+constexpr double KPlanes = 1.0;
+#else
+constexpr double KPlanes = K;
+#endif
 const double Centre[3] = { -0.025, -0.025, -0.03 }; // the test volume's box centre (data)
 
 void Configure(vtkVolumeMapper* mapper, const Case& c, vtkMatrix4x4* world, bool forVTK)
@@ -59,7 +70,7 @@ void Configure(vtkVolumeMapper* mapper, const Case& c, vtkMatrix4x4* world, bool
     double o[3];
     for (int a = 0; a < 3; ++a)
     {
-      o[a] = forVTK ? centre[a] + K * (p.Origin[a] - centre[a]) : p.Origin[a];
+      o[a] = forVTK ? centre[a] + KPlanes * (p.Origin[a] - centre[a]) : p.Origin[a];
     }
     plane->SetOrigin(o);
     plane->SetNormal(p.Normal[0], p.Normal[1], p.Normal[2]);
@@ -182,8 +193,10 @@ int main(int argc, char* argv[])
               << matters << " dB; brightness VTK " << Brightness(pictures[0]) << ", ours "
               << Brightness(pictures[1]) << ")\n";
     AVS_CHECK(Brightness(pictures[0]) > 1000.0);
-    AVS_CHECK(psnr >= 35.0);
-    AVS_CHECK(matters < 33.0); // what a mapper ignoring the setting would score: under 35 dB
+    // Measured 57.7-66.6 dB against VTK 9.1 and 9.6; 52 dB leaves about 6 dB for other drivers
+    // (a 5 % brightness error: 30-38 dB).
+    AVS_CHECK(psnr >= 52.0);
+    AVS_CHECK(matters < 33.0); // what a mapper ignoring the setting would score
   }
   AVS_CHECK(errors->Errors == 0);
 

@@ -46,6 +46,22 @@ vtkSmartPointer<vtkColorTransferFunction> Color(double r, double g, double b)
   f->AddRGBPoint(900, r, g, b);
   return vtkSmartPointer<vtkColorTransferFunction>(f.Get());
 }
+
+// The test arrays' components at (x, y, z) in [-1, 1]^3.
+std::array<double, 4> ShellAndSlab(double x, double y, double z)
+{
+  return { ShellValue(x, y, z)[0], SlabValue(x, y, z)[0], 0, 0 };
+}
+
+std::array<double, 4> TwoBalls(double x, double y, double z)
+{
+  return { Ball(x, y, z, -0.4, 0.0, 0.0, 0.5), Ball(x, y, z, 0.4, 0.15, 0.0, 0.5), 0, 0 };
+}
+
+std::array<double, 4> ColouredShell(double x, double y, double z)
+{
+  return { 0.5 + 0.5 * x, 0.5 + 0.5 * y, 0.5 - 0.5 * z, ShellValue(x, y, z)[0] / 900.0 };
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -65,31 +81,13 @@ int main(int argc, char* argv[])
   // Two components: "la" (dependent: the shell's value for the colour, a tilted slab for the
   // opacity) and "two" (independent: two balls apart).
   auto data = MakeTestImage();
-  AddArray(data,
-    "la",
-    2,
-    false,
-    [](double x, double y, double z) -> std::array<double, 4> {
-      return { ShellValue(x, y, z)[0], SlabValue(x, y, z)[0], 0, 0 };
-    });
-  AddArray(data,
-    "two",
-    2,
-    false,
-    [](double x, double y, double z) -> std::array<double, 4> {
-      return { Ball(x, y, z, -0.4, 0.0, 0.0, 0.5), Ball(x, y, z, 0.4, 0.15, 0.0, 0.5), 0, 0 };
-    });
+  AddArray(data, "la", 2, false, ShellAndSlab);
+  AddArray(data, "two", 2, false, TwoBalls);
   // RGBA as unsigned char, as RGBA volumes come: RGB direct (/ 255), the opacity component
   // spanning 0-255 (where VTK's lookup of the opacity at the texture's normalised value is the
   // opacity function at the value).
   {
-    auto rgbaFloat = AddArray(data,
-      "rgba_float",
-      4,
-      false,
-      [](double x, double y, double z) -> std::array<double, 4> {
-        return { 0.5 + 0.5 * x, 0.5 + 0.5 * y, 0.5 - 0.5 * z, ShellValue(x, y, z)[0] / 900.0 };
-      });
+    auto rgbaFloat = AddArray(data, "rgba_float", 4, false, ColouredShell);
     vtkNew<vtkUnsignedCharArray> bytes;
     bytes->SetName("rgba");
     bytes->SetNumberOfComponents(4);

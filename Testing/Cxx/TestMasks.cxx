@@ -20,17 +20,17 @@
 
 namespace
 {
+// The mask's labels at (x, y) in [-1, 1]^2: 1 on the left, 2 at the top, 0 elsewhere.
+std::array<double, 4> Labels(double x, double y, double)
+{
+  return { x < -0.2 ? 1.0 : (y > 0.3 ? 2.0 : 0.0), 0, 0, 0 };
+}
+
 // Labels of the test volume's points: 1 where x < -0.2, 2 where y > 0.3 (elsewhere), else 0.
 vtkSmartPointer<vtkImageData> MakeMask(int n = 40)
 {
   auto mask = MakeTestImage(n);
-  auto values = AddArray(mask,
-    "labels",
-    1,
-    false,
-    [](double x, double y, double) -> std::array<double, 4> {
-      return { x < -0.2 ? 1.0 : (y > 0.3 ? 2.0 : 0.0), 0, 0, 0 };
-    });
+  auto values = AddArray(mask, "labels", 1, false, Labels);
   vtkNew<vtkUnsignedCharArray> bytes;
   bytes->SetName("labels");
   bytes->SetNumberOfTuples(values->GetNumberOfTuples());
@@ -56,6 +56,7 @@ void SetMask(vtkAVSVolumeMapper* m, vtkImageData* mask, int type, float blend)
   m->SetMaskType(type);
   m->SetMaskBlendFactor(blend);
 }
+
 } // namespace
 
 int main(int argc, char* argv[])

@@ -158,8 +158,10 @@ int main(int argc, char* argv[])
       "field",
       1,
       false,
-      [&](double x, double, double) -> std::array<double, 4> {
-        return { x > 0.0 ? NaN : 0.0, 0, 0, 0 };
+      [&](double x, double, double) -> std::array<double, 4>
+      {
+        const double value = x > 0.0 ? NaN : 0.0; // NaN in the right half
+        return { value, 0, 0, 0 };
       });
     block->GetPointData()->SetActiveScalars("field");
     vtkNew<vtkVolumeProperty> dense;

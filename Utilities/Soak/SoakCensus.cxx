@@ -1,7 +1,7 @@
 #include "SoakCensus.h"
 
+#include "vtkAVSOpenGL.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtk_glew.h"
 
 #include <fstream>
 #include <sstream>

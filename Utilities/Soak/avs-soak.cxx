@@ -26,8 +26,8 @@
 #include "SoakCensus.h"
 #include "SoakScene.h"
 
+#include "vtkAVSOpenGL.h"
 #include "vtkRenderWindow.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <chrono>
