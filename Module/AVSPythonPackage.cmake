@@ -3,10 +3,11 @@
 #
 #   avs_wrap_python(MODULES <module>... PACKAGE <name>)
 #
-# The package lives in <build>/python/<name>; `./avs python` puts <build>/python on PYTHONPATH.
+# The package lives in <build>/<AVS_PYTHON_DESTINATION>/<name> and is installed to the same
+# folder under the prefix; `./avs python` and the tests put that folder on PYTHONPATH.
 function (avs_wrap_python)
   cmake_parse_arguments(PARSE_ARGV 0 _avs "" "PACKAGE" "MODULES")
-  set(_destination "python")
+  set(_destination "${AVS_PYTHON_DESTINATION}")
   vtk_module_wrap_python(
     MODULES            ${_avs_MODULES}
     TARGET             AVS::Python
@@ -32,6 +33,10 @@ function (avs_wrap_python)
   set(AVS_PYTHON_IMPORTS "${_imports}")
   configure_file("${CMAKE_CURRENT_FUNCTION_LIST_DIR}/ambientscattering__init__.py.in"
     "${CMAKE_BINARY_DIR}/${_destination}/${_avs_PACKAGE}/__init__.py" @ONLY)
+  # ambientscattering.pyvista: the helper for PyVista users (imported on demand).
+  configure_file("${CMAKE_CURRENT_FUNCTION_LIST_DIR}/ambientscattering_pyvista.py"
+    "${CMAKE_BINARY_DIR}/${_destination}/${_avs_PACKAGE}/pyvista.py" COPYONLY)
   install(FILES "${CMAKE_BINARY_DIR}/${_destination}/${_avs_PACKAGE}/__init__.py"
+    "${CMAKE_BINARY_DIR}/${_destination}/${_avs_PACKAGE}/pyvista.py"
     DESTINATION "${_destination}/${_avs_PACKAGE}")
 endfunction ()

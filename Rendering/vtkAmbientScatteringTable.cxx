@@ -4,6 +4,8 @@
 
 #include "vtkObjectFactory.h"
 
+#include <dlfcn.h>
+
 #include <cstdlib>
 #include <fstream>
 
@@ -15,6 +17,22 @@ vtkAmbientScatteringTable::~vtkAmbientScatteringTable()
 {
   this->SetFileName(nullptr);
 }
+
+namespace
+{
+// The folder of the library this code is in (build tree or install tree alike).
+std::string LibraryFolder()
+{
+  Dl_info info;
+  if (dladdr(reinterpret_cast<void*>(&LibraryFolder), &info) == 0 || !info.dli_fname)
+  {
+    return std::string();
+  }
+  const std::string path = info.dli_fname;
+  const std::size_t slash = path.rfind('/');
+  return slash == std::string::npos ? std::string(".") : path.substr(0, slash);
+}
+} // namespace
 
 std::string vtkAmbientScatteringTable::GetDefaultFileName()
 {
@@ -30,12 +48,18 @@ std::string vtkAmbientScatteringTable::GetDefaultFileName()
       return env;
     }
   }
-#ifdef AVS_SOURCE_TABLE_PATH
-  if (exists(AVS_SOURCE_TABLE_PATH))
+  // Beside the library: share/ambientscattering, as the build tree and an installed tree (moved
+  // anywhere) lay it out.
+  const std::string folder = LibraryFolder();
+  if (!folder.empty())
   {
-    return AVS_SOURCE_TABLE_PATH;
+    const std::string beside = folder + "/" + AVS_TABLE_FROM_LIBRARY;
+    if (exists(beside))
+    {
+      return beside;
+    }
   }
-#endif
+  // Where the install prefix put it.
 #ifdef AVS_INSTALL_TABLE_PATH
   if (exists(AVS_INSTALL_TABLE_PATH))
   {

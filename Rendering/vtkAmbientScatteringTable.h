@@ -13,8 +13,9 @@
  * vtkErrorMacro saying which; the previously loaded table (if any) stays in place.
  *
  * The default file is the table shipped with the module: the environment variable
- * AVS_SCATTERING_TABLE overrides it, then the source tree's Data/ and the install tree's
- * share/ambientscattering are searched.
+ * AVS_SCATTERING_TABLE overrides it; otherwise it is found beside the library that holds this
+ * class, in share/ambientscattering (the build tree and an installed tree, wherever it was moved),
+ * else under the install prefix the project was configured with.
  */
 #ifndef vtkAmbientScatteringTable_h
 #define vtkAmbientScatteringTable_h

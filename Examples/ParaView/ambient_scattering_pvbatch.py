@@ -19,7 +19,7 @@ display.SetRepresentationType("Ambient Scattering")
 ColorBy(display, ("POINTS", "RTData"))
 GetOpacityTransferFunction("RTData").Points = [37, 0, 0.5, 0, 150, 0, 0.5, 0, 277, 1, 0.5, 0]
 display.LightingModel = "Ambient Scattering"  # or "Emission-Absorption", "Ambient Occlusion"
-display.Albedo = 0.9
+display.Albedo = 0.8
 display.ScatteringAnisotropy = 0.4  # the panel's "Anisotropy"
 display.AmbientRadius = 0.0  # automatic
 sun = AddLight(view=view)  # a light of the Lights panel, beside the light kit

@@ -1,0 +1,43 @@
+# The installed package, the way a user consumes it (ctest: Install.Package). Installs the build
+# into a fresh prefix, moves the tree elsewhere (it must be relocatable), builds the Consumer
+# project with find_package(AmbientScattering) against the moved tree and runs it, then runs
+# TestInstalledPython.py with only the moved tree's Python folder on PYTHONPATH and nothing of the
+# source or build folders in the environment.
+#
+#   cmake -DBUILD=<build dir> -DSOURCE=<source dir> -DWORK=<scratch dir> -DPYTHON=<interpreter>
+#         -DPYTHON_DESTINATION=<lib/python3/dist-packages> -P TestInstall.cmake
+function (run what)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
+  message("${out}")
+  if (NOT status EQUAL 0)
+    message(FATAL_ERROR "FAILED: ${what} (exit status ${status})")
+  endif ()
+endfunction ()
+
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}")
+run("cmake --install" "${CMAKE_COMMAND}" --install "${BUILD}" --prefix "${WORK}/installed")
+file(RENAME "${WORK}/installed" "${WORK}/moved")
+set(prefix "${WORK}/moved")
+foreach (file IN ITEMS lib/cmake/ambientscattering/AmbientScatteringConfig.cmake
+    lib/cmake/ambientscattering/AmbientScatteringConfigVersion.cmake
+    share/ambientscattering/scattering_table.avst "${PYTHON_DESTINATION}/ambientscattering/__init__.py")
+  if (NOT EXISTS "${prefix}/${file}")
+    message(FATAL_ERROR "FAILED: the installed tree lacks ${file}")
+  endif ()
+endforeach ()
+
+# The environment of both: the display, and nothing that points into the source or build tree.
+set(clean env -i "PATH=/usr/bin:/bin" "HOME=${WORK}" "DISPLAY=$ENV{DISPLAY}")
+if (DEFINED ENV{XAUTHORITY})
+  list(APPEND clean "XAUTHORITY=$ENV{XAUTHORITY}")
+endif ()
+
+run("configuring the consumer" ${clean} "${CMAKE_COMMAND}" -S "${SOURCE}/Testing/Install/Consumer"
+  -B "${WORK}/consumer" -DCMAKE_BUILD_TYPE=Release "-DCMAKE_PREFIX_PATH=${prefix}")
+run("building the consumer" ${clean} "${CMAKE_COMMAND}" --build "${WORK}/consumer")
+run("the consumer's frame" ${clean} "${WORK}/consumer/RenderOneFrame" "${prefix}")
+run("the installed Python package" ${clean} "PYTHONPATH=${prefix}/${PYTHON_DESTINATION}"
+  "PYTHONDONTWRITEBYTECODE=1" "${PYTHON}" "${SOURCE}/Testing/Install/TestInstalledPython.py"
+  "${prefix}")
+message("PASSED: installed, moved, found, built against and run")
