@@ -16,6 +16,11 @@
  *
  * Precomputation is redone only when its inputs change (see vtkAVSVolumeMapper). The table is the
  * one shipped with the module unless ScatteringTableFileName names another.
+ *
+ * The radiance these rays integrate is linear and, lit by ordinary VTK lights, brighter than a
+ * Phong-shaded picture (multiple scattering adds what single scattering lacks): what the
+ * framebuffer receives goes through the display transform, with this mapper's defaults exposure
+ * DefaultExposure (0.5) and the shoulder tone curve (vtkAVSVolumeMapper::SetExposure).
  */
 #ifndef vtkAmbientScatteringVolumeMapper_h
 #define vtkAmbientScatteringVolumeMapper_h
@@ -131,7 +136,12 @@ public:
   ///@}
 
   /**
-   * The default Exposure of this mapper (ToneMapping defaults to the shoulder here).
+   * The default Exposure of this mapper; its ToneMapping defaults to ShoulderToneMapping and
+   * AutoExposure to off (the display transform: vtkAVSVolumeMapper::SetExposure). Measured by the
+   * swap test (Testing/Python/TestSwapMapper.py): with the lights of an ordinary VTK scene (the
+   * automatic headlight, a vtkLightKit, lights of intensity 1) this picture is 0.62-1.12 times as
+   * bright as vtkGPUVolumeRayCastMapper's with ShadeOn, on six real volumes, and nothing
+   * saturates; linear radiance (exposure 1, clamp) is 1.4-2.3 times as bright and clips.
    */
   static constexpr double DefaultExposure = 0.5;
 
