@@ -510,6 +510,8 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
   this->LastImageSampleDistance = static_cast<float>(distance);
   this->LastExposure = frame.Display.Exposure;
+  this->LastToneMapping =
+    frame.Display.Curve == avs::ToneMapping::Shoulder ? ShoulderToneMapping : ClampToneMapping;
   this->NumberOfBricks = in.RayCaster.GetNumberOfBricks();
   ++this->NumberOfRenderedFrames;
   if (interactive)
@@ -528,20 +530,8 @@ avs::DisplayTransform vtkAVSVolumeMapper::ResolveDisplay(vtkRenderer* renderer, 
   // only ambient scattering is lit by them.
   if (rp.AutoExposure && this->GetEffect() == 2)
   {
-    const avs::GridGeometry& whole = this->Internal->Whole;
-    const avs::Vec3 lo = whole.BoxLower(), hi = whole.BoxUpper();
-    avs::Vec3 low{ VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, high = low * -1.0;
-    for (int c = 0; c < 8; ++c)
-    {
-      const avs::Vec3 data =
-        whole.LocalToWorld({ c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z });
-      double in[4] = { data.x, data.y, data.z, 1.0 }, out[4];
-      volume->GetMatrix()->MultiplyPoint(in, out);
-      const avs::Vec3 world{ out[0] / out[3], out[1] / out[3], out[2] / out[3] };
-      low = { std::min(low.x, world.x), std::min(low.y, world.y), std::min(low.z, world.z) };
-      high = { std::max(high.x, world.x), std::max(high.y, world.y), std::max(high.z, world.z) };
-    }
-    display.Exposure *= avs::AutoExposureFactor(this->Internal->WorldLights, low, high);
+    display.Exposure *= avs::AutoExposureFactor(
+      this->Internal->WorldLights, this->Internal->Whole, &volume->GetMatrix()->Element[0][0]);
   }
   // Under vtkToneMappingPass the pass maps the picture: the radiance goes to it linear.
   if (vtkAVSRenderPasses::UnderToneMapping(renderer))
@@ -574,6 +564,7 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ToneMapping: " << this->GetToneMappingAsString() << "\n";
   os << indent << "AutoExposure: " << (this->AutoExposure ? "On" : "Off") << "\n";
   os << indent << "LastExposure: " << this->LastExposure << "\n";
+  os << indent << "LastToneMapping: " << this->LastToneMapping << "\n";
   os << indent << "PrecomputeOnGPU: " << (this->PrecomputeOnGPU ? "On" : "Off") << "\n";
   os << indent << "LightVolumesOnGPU: " << (this->LightVolumesOnGPU ? "yes" : "no") << "\n";
   os << indent << "OcclusionOnGPU: " << (this->OcclusionOnGPU ? "yes" : "no") << "\n";

@@ -178,7 +178,7 @@ public:
    * The display transform: what the framebuffer receives of the linear radiance the rays
    * integrate (ALGORITHM.md section 1, "Display"). Exposure is a factor on the radiance (>= 0);
    * then the tone curve, ToneMapping: ClampToneMapping (the radiance as it is, which the
-   * framebuffer clamps at 1) or ShoulderToneMapping (linear up to 0.6, then a shoulder that
+   * framebuffer clamps at 1) or ShoulderToneMapping (linear up to 0.8, then a shoulder that
    * approaches 1 without reaching it, applied to the largest of R, G and B so that hue and
    * saturation stay: highlights compress instead of burning out). Applied once, where each ray
    * ends (for a split volume or another image sample distance, to the composited rays), before
@@ -229,6 +229,13 @@ public:
    * on); 0 before the first frame.
    */
   vtkGetMacro(LastExposure, double);
+
+  /**
+   * The tone curve the last frame applied: ToneMapping, or ClampToneMapping (none) where the
+   * renderer's passes hold a vtkToneMappingPass, which maps the picture itself; -1 before the
+   * first frame.
+   */
+  vtkGetMacro(LastToneMapping, int);
 
   ///@{
   /**
@@ -438,6 +445,7 @@ protected:
   int ToneMapping = ClampToneMapping;
   vtkTypeBool AutoExposure = 0;
   double LastExposure = 0.0;
+  int LastToneMapping = -1;
   vtkTypeBool LightVolumesOnGPU = 0;
   vtkTypeBool OcclusionOnGPU = 0;
   int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };

@@ -368,17 +368,7 @@ avs::DisplayTransform vtkVolumeReferenceRenderer::ResolveDisplay(const avs::Volu
     curve == ShoulderToneMapping ? avs::ToneMapping::Shoulder : avs::ToneMapping::Clamp;
   if (this->AutoExposure && lit)
   {
-    const avs::GridGeometry& g = scene.Scalars.Geometry;
-    const avs::Vec3 lo = g.BoxLower(), hi = g.BoxUpper();
-    avs::Vec3 low{ VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, high = low * -1.0;
-    for (int c = 0; c < 8; ++c)
-    {
-      const avs::Vec3 w =
-        g.LocalToWorld({ c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z });
-      low = { std::min(low.x, w.x), std::min(low.y, w.y), std::min(low.z, w.z) };
-      high = { std::max(high.x, w.x), std::max(high.y, w.y), std::max(high.z, w.z) };
-    }
-    display.Exposure *= avs::AutoExposureFactor(scene.Lights, low, high);
+    display.Exposure *= avs::AutoExposureFactor(scene.Lights, scene.Scalars.Geometry);
   }
   this->ResolvedExposure = display.Exposure;
   this->ResolvedToneMapping = curve;

@@ -204,6 +204,13 @@ def main(plugin, out):
     checks.check(mapper is not None and "ToneMapping: Clamp" in str(mapper),
                  "ToneMapping reaches the mapper")
     display.ToneMapping = "Shoulder"
+    # Under the view's own tone mapping (a vtkToneMappingPass in ParaView's passes) the volume
+    # hands over its radiance without its shoulder; without it, the shoulder is back.
+    for on, curve in ((1, "LastToneMapping: 0"), (0, "LastToneMapping: 1")):
+        view.UseToneMapping = on
+        pv.Render(view)
+        checks.check(mapper is not None and curve in str(mapper),
+                     "the view's tone mapping %s: the mapper's %s" % ("on" if on else "off", curve))
     display.AutoExposure = 1
     pv.Render(view)
     checks.check(mapper is not None and "AutoExposure: On" in str(mapper),

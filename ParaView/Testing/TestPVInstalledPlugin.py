@@ -36,8 +36,14 @@ else:
     mapper = volume.GetMapper() if volume else None
     if mapper is None or mapper.GetClassName() != "vtkAmbientScatteringVolumeMapper":
         failures.append("the view does not render with vtkAmbientScatteringVolumeMapper")
-    elif "ScatteringTableFileName" not in str(mapper) or "errors" in str(mapper).lower():
-        failures.append("the mapper did not print its settings")
+    else:
+        # The shipped table, loaded from the installed plugin's folder (the mapper's PrintSelf
+        # prints its table's).
+        loaded = [line.split(":", 1)[1].strip() for line in str(mapper).splitlines()
+                  if line.strip().startswith("LoadedFileName:")]
+        if not loaded or not os.path.realpath(loaded[0]).startswith(os.path.realpath(folder)):
+            failures.append("the scattering table came from %s, not the installed folder %s"
+                            % (loaded, folder))
 # The view goes first, while its window is still there (left to the interpreter's exit, the
 # order of teardown can leave a GL context current that is gone).
 Delete(display)

@@ -14,7 +14,7 @@ double DisplayTransform::Shoulder(double m)
     return std::max(m, 0.0);
   }
   const double u = (m - s) / (1.0 - s);
-  return s + (1.0 - s) * u / (1.0 + u);
+  return s + (1.0 - s) * (1.0 - 1.0 / (1.0 + u)); // u / (1 + u), finite for an infinite u
 }
 
 Vec3 DisplayTransform::Apply(const Vec3& radiance) const
@@ -54,6 +54,29 @@ double AutoExposureFactor(const std::vector<Light>& lights, const Vec3& low, con
   const double mean = sum / (n * n * n);
   constexpr double unit = 4.0 * Pi; // one white light of intensity 1
   return mean > 0.0 && std::isfinite(mean) ? unit / mean : 1.0;
+}
+
+double AutoExposureFactor(const std::vector<Light>& lights,
+  const GridGeometry& grid,
+  const double* dataToWorld)
+{
+  const Vec3 lo = grid.BoxLower(), hi = grid.BoxUpper();
+  Vec3 low{ 1e300, 1e300, 1e300 }, high{ -1e300, -1e300, -1e300 };
+  for (int c = 0; c < 8; ++c)
+  {
+    Vec3 p = grid.LocalToWorld({ c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z });
+    if (dataToWorld)
+    {
+      const double* m = dataToWorld;
+      const double w = m[12] * p.x + m[13] * p.y + m[14] * p.z + m[15];
+      p = { (m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3]) / w,
+        (m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7]) / w,
+        (m[8] * p.x + m[9] * p.y + m[10] * p.z + m[11]) / w };
+    }
+    low = { std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z) };
+    high = { std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z) };
+  }
+  return AutoExposureFactor(lights, low, high);
 }
 
 } // namespace avs

@@ -17,6 +17,7 @@
 #ifndef avs_DisplayTransform_h
 #define avs_DisplayTransform_h
 
+#include "Grid.h"
 #include "Lights.h"
 #include "Vec3.h"
 
@@ -54,6 +55,11 @@ struct DisplayTransform
 /// not depend on the camera, nor on the shadows, so a directional light that turns with the
 /// camera (a headlight, a light kit) meters the same in every view. 1 without light.
 double AutoExposureFactor(const std::vector<Light>& lights, const Vec3& low, const Vec3& high);
+/// The same over the world box of `grid`'s volume (its box, border included), placed by
+/// `dataToWorld` (a 4 x 4 row-major matrix, VTK's convention; null: the identity).
+double AutoExposureFactor(const std::vector<Light>& lights,
+  const GridGeometry& grid,
+  const double* dataToWorld = nullptr);
 
 } // namespace avs
 

@@ -146,3 +146,11 @@ std::array<double, 3> vtkAVSFrameUniforms::EyeInIndexFrame(vtkRenderer* renderer
   frame.WorldToIndex->MultiplyPoint(world, index);
   return { index[0] / index[3], index[1] / index[3], index[2] / index[3] };
 }
+
+void vtkAVSFrameUniforms::SetDisplay(vtkShaderProgram* program,
+  const avs::DisplayTransform& display)
+{
+  program->SetUniformf("u_exposure", static_cast<float>(display.Exposure));
+  program->SetUniformi("u_toneMapping", display.Curve == avs::ToneMapping::Shoulder ? 1 : 0);
+  program->SetUniformf("u_shoulderStart", static_cast<float>(avs::DisplayTransform::ShoulderStart));
+}

@@ -30,6 +30,8 @@ public:
   /// The effect's parameters: sampling and termination, the medium (albedo, anisotropy,
   /// emission), AO's weights or ambient scattering's radius, and the jitter.
   static void SetParameters(vtkShaderProgram* program, const vtkAVSRayCaster::Frame& frame);
+  /// The display transform's uniforms (avs_display.glsl): exposure, tone curve, shoulder start.
+  static void SetDisplay(vtkShaderProgram* program, const avs::DisplayTransform& display);
   /// A split volume's brick (vtkAVSBricks): its owned box, texture origin and size, and the
   /// gradient's voxel step in its texture.
   static void SetBrick(vtkShaderProgram* program, const vtkAVSBricks::Brick& brick);

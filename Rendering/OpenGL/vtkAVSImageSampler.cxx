@@ -1,5 +1,6 @@
 #include "vtkAVSImageSampler.h"
 
+#include "vtkAVSFrameUniforms.h"
 #include "vtkAVSShaderAssembly.h"
 
 #include "ImageSampleDistance.h"
@@ -189,11 +190,7 @@ bool vtkAVSImageSampler::Draw(vtkOpenGLRenderWindow* window,
   window->GetShaderCache()->ReadyShaderProgram(this->Composite->Program);
   this->Target->Activate();
   this->Composite->Program->SetUniformi("u_sampled", this->Target->GetTextureUnit());
-  this->Composite->Program->SetUniformf("u_exposure", static_cast<float>(display.Exposure));
-  this->Composite->Program->SetUniformi(
-    "u_toneMapping", display.Curve == avs::ToneMapping::Shoulder ? 1 : 0);
-  this->Composite->Program->SetUniformf(
-    "u_shoulderStart", static_cast<float>(avs::DisplayTransform::ShoulderStart));
+  vtkAVSFrameUniforms::SetDisplay(this->Composite->Program, display);
   state->vtkglViewport(x, y, width, height);
   this->Composite->Render();
   this->Target->Deactivate();

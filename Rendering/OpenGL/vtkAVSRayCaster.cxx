@@ -357,9 +357,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     vtkAVSShaderOptions::SetBlendUniforms(program, frame.Blend);
   }
   program->SetUniformi("u_depth", depth->GetTextureUnit());
-  program->SetUniformf("u_exposure", static_cast<float>(frame.Display.Exposure));
-  program->SetUniformi("u_toneMapping", frame.Display.Curve == avs::ToneMapping::Shoulder ? 1 : 0);
-  program->SetUniformf("u_shoulderStart", static_cast<float>(avs::DisplayTransform::ShoulderStart));
+  vtkAVSFrameUniforms::SetDisplay(program, frame.Display);
   // The volume and its classification (avs_classify.glsl), with the interpolation type's filter.
   if (!bricked)
   {
@@ -509,7 +507,8 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     }
     else
     {
-      // (A split volume whose target could not be made: each brick's pass is mapped alone.)
+      // Straight into the viewport: the ray maps its own radiance. (A split volume whose target
+      // could not be made comes here too: then each brick's pass is mapped alone.)
       program->SetUniformi("u_displayInRay", 1);
       state->vtkglViewport(x, y, width, height);
       drawPass();

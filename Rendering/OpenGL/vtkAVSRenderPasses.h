@@ -19,7 +19,9 @@
  *   accumulation target, which the pass then blends the translucent layers behind, and nothing in
  *   the later calls (Role). The picture is the one the renderer gives without
  *   UseDepthPeelingForVolumes: the volume composited over the translucent geometry.
- * - Under vtkToneMappingPass (anywhere in the renderer's chain of passes) the pass maps the whole
+ * - Under vtkToneMappingPass (the renderer's pass, or a delegate of camera, image-processing,
+ *   SSAA, sequence and render-steps passes below it; ParaView's view tone mapping, in one
+ *   process, is tested) the pass maps the whole
  *   picture from its float framebuffer: the volume hands over its radiance linear, with its
  *   exposure but without its own tone curve, so that nothing is mapped twice (UnderToneMapping).
  * - VTK's passes leave OpenGL errors pending in release builds (glCopyTexImage2D from a

@@ -14,7 +14,8 @@ vec3 DisplayTransform(vec3 radiance)
   if (u_toneMapping == 1 && m > u_shoulderStart)
   {
     float u = (m - u_shoulderStart) / (1.0 - u_shoulderStart);
-    float curve = u_shoulderStart + (1.0 - u_shoulderStart) * u / (1.0 + u);
+    // u / (1 + u), written to stay finite for an infinite u (a half float that overflowed)
+    float curve = u_shoulderStart + (1.0 - u_shoulderStart) * (1.0 - 1.0 / (1.0 + u));
     x *= curve / m;
   }
   return x;

@@ -185,7 +185,8 @@ inline int RegressionTest(int argc,
   auto report = [](const std::string& what, const RegressionComparison& c)
   {
     std::cout << what << ": PSNR " << c.Psnr << " dB, " << 100.0 * c.Share
-              << " % of the pixels more than 8 levels off (largest " << c.Largest << ") -> "
+              << " % of the pixels more than " << RegressionTolerance().Levels
+              << " levels off (largest " << c.Largest << ") -> "
               << (c.Matches ? "matches" : "differs") << "\n";
   };
   const RegressionComparison own = CompareToBaseline(picture, baseline);

@@ -235,7 +235,9 @@ int main(int, char*[])
     std::cout << "shoulder: bricked " << Psnr(bricked, shoulder) << " dB, image sample distance "
               << "0.5 " << Psnr(super, shoulder) << " dB against the full-resolution picture\n";
     AVS_CHECK(Psnr(bricked, shoulder) >= 45.0);
-    AVS_CHECK(Psnr(super, shoulder) >= 30.0); // (2 x 2 rays per pixel: an antialiased picture)
+    // Measured 50.6 dB (2 x 2 rays per pixel: an antialiased picture); without the curve, or
+    // with it twice, the picture would sit near the clamp picture's 20.6 dB.
+    AVS_CHECK(Psnr(super, shoulder) >= 40.0);
   }
 
   // --- 4b. The CPU reference applies the same transform (its automatic defaults are the

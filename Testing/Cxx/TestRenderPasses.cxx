@@ -315,7 +315,7 @@ struct Scene
     this->Switch(on);
     // Under vtkToneMappingPass a mapper hands over its radiance without its own tone curve; the
     // reference (the picture without the pass, mapped here as the pass maps it) is that
-    // radiance too. (TestDisplayTransform checks that the curve is left out under the pass.)
+    // radiance too. (TestMapperDisplayTransform checks that the curve is left out under the pass.)
     auto* ours = vtkAVSVolumeMapper::SafeDownCast(this->Volume->GetMapper());
     if (ours && this->Kind == Setup::ToneMapping)
     {
