@@ -5,7 +5,12 @@
 # source or build folders in the environment.
 #
 #   cmake -DBUILD=<build dir> -DSOURCE=<source dir> -DWORK=<scratch dir> -DPYTHON=<interpreter>
-#         -DPYTHON_DESTINATION=<lib/python3/dist-packages> -P TestInstall.cmake
+#         -DPYTHON_DESTINATION=<lib/python3/dist-packages> [-DSANITIZE=ON
+#         -DPYTHON_ENVIRONMENT=<VAR=value;...>] -P TestInstall.cmake
+#
+# In the sanitizer build (SANITIZE) the installed libraries need the sanitizer runtimes: the
+# consumer links them, with leak checking off in it (the module's own tests check leaks with the
+# project's suppressions), and Python gets PYTHON_ENVIRONMENT (the runtime preloaded).
 function (run what)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
   message("${out}")
@@ -33,11 +38,24 @@ if (DEFINED ENV{XAUTHORITY})
   list(APPEND clean "XAUTHORITY=$ENV{XAUTHORITY}")
 endif ()
 
+set(consumer_options)
+set(consumer_environment)
+set(python_environment)
+if (SANITIZE)
+  set(consumer_options "-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined"
+    "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined")
+  set(consumer_environment "ASAN_OPTIONS=detect_leaks=0")
+  set(python_environment ${PYTHON_ENVIRONMENT})
+endif ()
+
 run("configuring the consumer" ${clean} "${CMAKE_COMMAND}" -S "${SOURCE}/Testing/Install/Consumer"
-  -B "${WORK}/consumer" -DCMAKE_BUILD_TYPE=Release "-DCMAKE_PREFIX_PATH=${prefix}")
+  -B "${WORK}/consumer" -DCMAKE_BUILD_TYPE=Release "-DCMAKE_PREFIX_PATH=${prefix}"
+  ${consumer_options})
 run("building the consumer" ${clean} "${CMAKE_COMMAND}" --build "${WORK}/consumer")
-run("the consumer's frame" ${clean} "${WORK}/consumer/RenderOneFrame" "${prefix}")
-run("the installed Python package" ${clean} "PYTHONPATH=${prefix}/${PYTHON_DESTINATION}"
+run("the consumer's frame" ${clean} ${consumer_environment} "${WORK}/consumer/RenderOneFrame"
+  "${prefix}")
+run("the installed Python package" ${clean} ${python_environment}
+  "PYTHONPATH=${prefix}/${PYTHON_DESTINATION}"
   "PYTHONDONTWRITEBYTECODE=1" "${PYTHON}" "${SOURCE}/Testing/Install/TestInstalledPython.py"
   "${prefix}")
 message("PASSED: installed, moved, found, built against and run")
