@@ -5,12 +5,13 @@
 # source or build folders in the environment.
 #
 #   cmake -DBUILD=<build dir> -DSOURCE=<source dir> -DWORK=<scratch dir> -DPYTHON=<interpreter>
-#         -DPYTHON_DESTINATION=<lib/python3/dist-packages> [-DSANITIZE=ON
-#         -DPYTHON_ENVIRONMENT=<VAR=value;...>] -P TestInstall.cmake
+#         -DPYTHON_DESTINATION=<lib/python3/dist-packages> [-DSANITIZER_LINK_FLAG=<flag>]
+#         [-DPYTHON_ENVIRONMENT=<VAR=value;...>] -P TestInstall.cmake
 #
-# In the sanitizer build (SANITIZE) the installed libraries need the sanitizer runtimes: the
-# consumer links them, with leak checking off in it (the module's own tests check leaks with the
-# project's suppressions), and Python gets PYTHON_ENVIRONMENT (the runtime preloaded).
+# In the sanitizer build the installed libraries need the sanitizer runtimes: the consumer links
+# them (SANITIZER_LINK_FLAG), with leak checking off in it (the module's own tests check leaks
+# with the project's suppressions), and Python runs with the Python tests' environment
+# (PYTHON_ENVIRONMENT: the runtime preloaded).
 function (run what)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
   message("${out}")
@@ -40,12 +41,9 @@ endif ()
 
 set(consumer_options)
 set(consumer_environment)
-set(python_environment)
-if (SANITIZE)
-  set(consumer_options "-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined"
-    "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined")
+if (SANITIZER_LINK_FLAG)
+  set(consumer_options "-DCMAKE_EXE_LINKER_FLAGS=${SANITIZER_LINK_FLAG}")
   set(consumer_environment "ASAN_OPTIONS=detect_leaks=0")
-  set(python_environment ${PYTHON_ENVIRONMENT})
 endif ()
 
 run("configuring the consumer" ${clean} "${CMAKE_COMMAND}" -S "${SOURCE}/Testing/Install/Consumer"
@@ -54,7 +52,7 @@ run("configuring the consumer" ${clean} "${CMAKE_COMMAND}" -S "${SOURCE}/Testing
 run("building the consumer" ${clean} "${CMAKE_COMMAND}" --build "${WORK}/consumer")
 run("the consumer's frame" ${clean} ${consumer_environment} "${WORK}/consumer/RenderOneFrame"
   "${prefix}")
-run("the installed Python package" ${clean} ${python_environment}
+run("the installed Python package" ${clean} ${PYTHON_ENVIRONMENT}
   "PYTHONPATH=${prefix}/${PYTHON_DESTINATION}"
   "PYTHONDONTWRITEBYTECODE=1" "${PYTHON}" "${SOURCE}/Testing/Install/TestInstalledPython.py"
   "${prefix}")
