@@ -488,6 +488,7 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.PeelingFront = role == vtkAVSRenderPasses::Role::PeelingFront;
   frame.ImageSampleDistance = distance;
   frame.Display = this->ResolveDisplay(renderer, volume);
+  frame.SkipEmptySpace = this->EmptySpaceSkipping != 0;
   // The adjustment times the ray-casting pass alone (the precomputation does not scale with the
   // rays), finished on the GPU as vtkOpenGLGPUVolumeRayCastMapper finishes its frames.
   if (adjust)
@@ -513,6 +514,8 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   this->LastToneMapping =
     frame.Display.Curve == avs::ToneMapping::Shoulder ? ShoulderToneMapping : ClampToneMapping;
   this->NumberOfBricks = in.RayCaster.GetNumberOfBricks();
+  this->LastEmptyCellFraction = in.RayCaster.GetEmptyCellFraction();
+  this->LastSkippedEmptySpace = in.RayCaster.GetLastSkippedEmptySpace() ? 1 : 0;
   ++this->NumberOfRenderedFrames;
   if (interactive)
   {
@@ -568,6 +571,9 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PrecomputeOnGPU: " << (this->PrecomputeOnGPU ? "On" : "Off") << "\n";
   os << indent << "LightVolumesOnGPU: " << (this->LightVolumesOnGPU ? "yes" : "no") << "\n";
   os << indent << "OcclusionOnGPU: " << (this->OcclusionOnGPU ? "yes" : "no") << "\n";
+  os << indent << "EmptySpaceSkipping: " << (this->EmptySpaceSkipping ? "On" : "Off") << "\n";
+  os << indent << "LastEmptyCellFraction: " << this->LastEmptyCellFraction << "\n";
+  os << indent << "LastSkippedEmptySpace: " << (this->LastSkippedEmptySpace ? "yes" : "no") << "\n";
   os << indent << "WholeExtent: (" << this->WholeExtent[0] << ", " << this->WholeExtent[1] << ", "
      << this->WholeExtent[2] << ", " << this->WholeExtent[3] << ", " << this->WholeExtent[4] << ", "
      << this->WholeExtent[5] << ")"

@@ -250,6 +250,29 @@ public:
 
   ///@{
   /**
+   * Leap over empty space: a coarse grid of the volume (cells of 8^3 voxels) says where no
+   * sample can have opacity for the current transfer functions, and rays leap over those cells
+   * to the first of their own samples beyond them, so the picture is the one without it. Built
+   * when the data or the opacity change, never for a camera move; conservative (gradient
+   * opacity, masks, clipping and cropping only make space emptier). The blend modes other than
+   * composite read every sample and do not leap. Default on; off is for comparing.
+   */
+  vtkSetMacro(EmptySpaceSkipping, vtkTypeBool);
+  vtkGetMacro(EmptySpaceSkipping, vtkTypeBool);
+  vtkBooleanMacro(EmptySpaceSkipping, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * The share of the grid's cells that were empty for the last frame's transfer functions
+   * (0 before the first frame), and whether the last frame leapt over them.
+   */
+  vtkGetMacro(LastEmptyCellFraction, double);
+  vtkGetMacro(LastSkippedEmptySpace, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
    * Distributed rendering (ParaView's pvserver and pvbatch under MPI, or any application whose
    * processes render one piece of an image each and composite the pictures): WholeExtent is the
    * extent of the whole image of which the input is a piece (VTK's extents are global, so the
@@ -441,6 +464,9 @@ protected:
   vtkTypeBool UseJittering = 1;
   double TerminationTransmittance = 1.0 / 255.0;
   vtkTypeBool PrecomputeOnGPU = 1;
+  vtkTypeBool EmptySpaceSkipping = 1;
+  double LastEmptyCellFraction = 0.0;
+  vtkTypeBool LastSkippedEmptySpace = 0;
   double Exposure = 1.0;
   int ToneMapping = ClampToneMapping;
   vtkTypeBool AutoExposure = 0;

@@ -4,17 +4,19 @@
 //   bench <name> <value> <unit>
 //   ratio <name> <value>
 //
-// Scene: the built-in nebula (default 256^3), 512 x 512 pixels, the same sample distance and
-// transfer functions for every mapper, jittering off. Each mapper renders a warm-up frame (which
+// Scene: the built-in nebula (default 256^3) or, with --embryo FILE, the real embryo scan (VTK's
+// embryo.slc, 256^3 unsigned 8-bit, 87 % of it empty), placed in the nebula's box with the
+// nebula's transfer functions over its own range, 512 x 512 pixels, the same sample distance
+// (half a voxel) and transfer functions for every mapper, jittering off. The embryo's lines
+// carry the suffix _embryo. Each mapper renders a warm-up frame (which
 // includes its precomputation), then frames with a camera turning 3 degrees per frame; the
 // median of their times is reported. The mappers render in alternation, frame by frame at each
-// camera position (with one light VTK's EA, ours, AO and ambient scattering, as1; with four
-// lights our EA and ambient scattering in both models, the paper's, as4, and the extended one,
-// asx4), and each ratio is the median of the per-position ratios, so that the ratios do not
-// follow the machine's drifts (--frames-only stops after them). Then
-// the rebuild after a transfer-function change and after a light move, for both models in
-// alternation: the frame after the change less the next frame, the median over five changes of
-// each kind.
+// camera position (with one light VTK's EA, ours, AO and ambient scattering in both models, the
+// paper's, as1, and the extended one, asx1; with four lights our EA and ambient scattering in
+// both models, as4 and asx4), and each ratio is the median of the per-position ratios, so that the
+// ratios do not follow the machine's drifts (--frames-only stops after them). Then the rebuild
+// after a transfer-function change and after a light move, for both models in alternation: the
+// frame after the change less the next frame, the median over five changes of each kind.
 //
 // Then interaction, as vtkRenderWindowInteractor drives it (its style sets the render window's
 // desired update rate to the interactor's DesiredUpdateRate, 15, while a button is down, and to
@@ -52,6 +54,7 @@
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSLCReader.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 #include "vtkXMLImageDataWriter.h"
@@ -263,7 +266,7 @@ struct Bench
 
 /// The interaction scenario (see the top of the file); false when the light-volume rebuilds
 /// were not the expected ones (none while interacting, the stale ones at the still frame).
-bool RunInteraction(Bench& b, int lightGrid)
+bool RunInteraction(Bench& b, int lightGrid, const std::string& scene)
 {
   vtkNew<vtkVolumeProperty> shaded;
   shaded->DeepCopy(b.Property);
@@ -276,7 +279,7 @@ bool RunInteraction(Bench& b, int lightGrid)
   bool ok = true;
   for (const std::string lights : { "headlight", "lightkit" })
   {
-    const std::string suffix = "_" + lights;
+    const std::string suffix = "_" + lights + scene;
     if (lights == "headlight")
     {
       b.SetHeadlight();
@@ -329,7 +332,7 @@ bool RunInteraction(Bench& b, int lightGrid)
       mapper->UseJitteringOff();
       const auto o = b.Interact(mapper, b.Property);
       const bool scattering = name.rfind("as", 0) == 0;
-      const std::string label = name + (scattering ? suffix : std::string());
+      const std::string label = name + (scattering ? suffix : scene);
       std::printf("bench interactive_frame_%s %.4f s\n", label.c_str(), o.Interactive);
       std::printf("bench still_frame_%s %.4f s\n", label.c_str(), o.Still);
       std::printf("bench image_sample_distance_%s %.1f\n", label.c_str(), o.Distance);
@@ -358,7 +361,7 @@ int main(int argc, char* argv[])
   int voxels = 256, size = 512, frames = 10, lightGrid = 0;
   bool interactionOnly = false, clipping = false, clipNothing = false, modelsOnly = false,
        framesOnly = false;
-  std::string writeScene;
+  std::string writeScene, embryo;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -368,7 +371,7 @@ int main(int argc, char* argv[])
         "Usage: avs-bench-mappers [--voxels N] [--size N] [--frames N] [--light-grid N] "
         "[--interaction-only | --scattering-models-only] [--frames-only] "
         "[--clipping | --clipping-nothing] "
-        "[--write-scene FILE.vti]\n\n"
+        "[--write-scene FILE.vti] [--embryo FILE.slc]\n\n"
         "Median frame times of VTK's vtkGPUVolumeRayCastMapper and of the module's "
         "mappers on the built-in nebula\n(N^3 voxels, default 256), N x N pixels "
         "(default 512), over N frames (default 10), and their ratios;\nthen interactive "
@@ -382,12 +385,19 @@ int main(int argc, char* argv[])
         "--clipping: three clipping planes and cropping (fence) on every mapper;\n"
         "--clipping-nothing: planes outside the volume, every cropping region kept.\n"
         "--write-scene FILE.vti: write the nebula (for ParaView's peer, "
-        "Utilities/ParaView) and stop.\n");
+        "Utilities/ParaView) and stop.\n"
+        "--embryo FILE.slc: the embryo scan (VTK's embryo.slc) in place of the nebula; its "
+        "lines end in _embryo.\n");
       return 0;
     }
     if (arg == "--write-scene" && i + 1 < argc)
     {
       writeScene = argv[++i];
+      continue;
+    }
+    if (arg == "--embryo" && i + 1 < argc)
+    {
+      embryo = argv[++i];
       continue;
     }
     if (arg == "--interaction-only")
@@ -428,20 +438,53 @@ int main(int argc, char* argv[])
 
   Bench b;
   b.Frames = frames;
-  const avs::Grid nebula = avs::MakeNebula(voxels);
-  const auto& g = nebula.Geometry;
-  b.Volume->SetDimensions(g.Dimensions[0], g.Dimensions[1], g.Dimensions[2]);
-  b.Volume->SetSpacing(g.Spacing.x, g.Spacing.y, g.Spacing.z);
-  b.Volume->SetOrigin(g.Origin.x, g.Origin.y, g.Origin.z);
-  vtkNew<vtkFloatArray> values;
-  values->SetNumberOfTuples(static_cast<vtkIdType>(nebula.Values.size()));
-  std::copy(nebula.Values.begin(), nebula.Values.end(), values->GetPointer(0));
-  b.Volume->GetPointData()->SetScalars(values);
+  std::string scene = "nebula";
+  double top = 1.0; // the transfer functions' scalar range is [0, top]
+  if (!embryo.empty())
+  {
+    // The scan in the nebula's box [-1, 1]^3, so that the camera, the lights and the unit
+    // distance are the nebula's.
+    vtkNew<vtkSLCReader> reader;
+    reader->SetFileName(embryo.c_str());
+    reader->Update();
+    vtkImageData* scan = reader->GetOutput();
+    int d[3];
+    scan->GetDimensions(d);
+    if (reader->GetErrorCode() != 0 || !scan->GetPointData()->GetScalars() || d[0] < 2 ||
+      d[1] < 2 || d[2] < 2)
+    {
+      std::fprintf(stderr, "avs-bench-mappers: cannot read the scan %s\n", embryo.c_str());
+      return 1;
+    }
+    b.Volume->ShallowCopy(scan);
+    const int longest = std::max({ d[0], d[1], d[2] });
+    const double h = 2.0 / (longest - 1);
+    b.Volume->SetSpacing(h, h, h);
+    b.Volume->SetOrigin(-0.5 * h * (d[0] - 1), -0.5 * h * (d[1] - 1), -0.5 * h * (d[2] - 1));
+    top = b.Volume->GetPointData()->GetScalars()->GetRange()[1];
+    scene = "embryo";
+    voxels = longest;
+  }
+  else
+  {
+    const avs::Grid nebula = avs::MakeNebula(voxels);
+    const auto& g = nebula.Geometry;
+    b.Volume->SetDimensions(g.Dimensions[0], g.Dimensions[1], g.Dimensions[2]);
+    b.Volume->SetSpacing(g.Spacing.x, g.Spacing.y, g.Spacing.z);
+    b.Volume->SetOrigin(g.Origin.x, g.Origin.y, g.Origin.z);
+    vtkNew<vtkFloatArray> values;
+    values->SetNumberOfTuples(static_cast<vtkIdType>(nebula.Values.size()));
+    std::copy(nebula.Values.begin(), nebula.Values.end(), values->GetPointer(0));
+    values->SetName("density");
+    b.Volume->GetPointData()->SetScalars(values);
+  }
+  // The embryo's lines carry its name.
+  const std::string suffix = scene == "nebula" ? "" : "_" + scene;
+  auto name = [&suffix](const char* n) { return std::string(n) + suffix; };
   if (!writeScene.empty())
   {
     // The same volume for the ParaView peer (Utilities/ParaView/avs-bench-paraview.py), which
     // sets the transfer functions, lights, sample distance and image size below itself.
-    values->SetName("density");
     vtkNew<vtkXMLImageDataWriter> writer;
     writer->SetFileName(writeScene.c_str());
     writer->SetInputData(b.Volume);
@@ -450,12 +493,12 @@ int main(int argc, char* argv[])
       std::fprintf(stderr, "avs-bench-mappers: cannot write %s\n", writeScene.c_str());
       return 1;
     }
-    std::printf("# scene: nebula %d^3 written to %s\n", voxels, writeScene.c_str());
+    std::printf("# scene: %s %d^3 written to %s\n", scene.c_str(), voxels, writeScene.c_str());
     return 0;
   }
 
   vtkNew<vtkColorTransferFunction> color;
-  ConfigureBenchProperty(b.Property, color, b.Opacity, 1.0);
+  ConfigureBenchProperty(b.Property, color, b.Opacity, top);
   b.Lights = MakeBenchLights();
 
   b.Window->SetSize(size, size);
@@ -464,9 +507,10 @@ int main(int argc, char* argv[])
   b.Window->AddRenderer(b.Renderer);
   b.SetLights(1);
 
-  const double sampleDistance = 0.5 * g.Spacing.x;
-  std::printf("# scene: nebula %d^3, %d x %d pixels, sample distance %g, %d frames per mapper, "
+  const double sampleDistance = 0.5 * b.Volume->GetSpacing()[0];
+  std::printf("# scene: %s %d^3, %d x %d pixels, sample distance %g, %d frames per mapper, "
               "light volumes at most %d per axis\n",
+    scene.c_str(),
     voxels,
     size,
     size,
@@ -478,7 +522,7 @@ int main(int argc, char* argv[])
 
   if (interactionOnly)
   {
-    if (!RunInteraction(b, lightGrid))
+    if (!RunInteraction(b, lightGrid, suffix))
     {
       std::fprintf(stderr, "avs-bench-mappers: light volumes were rebuilt while interacting\n");
       return 1;
@@ -494,20 +538,24 @@ int main(int argc, char* argv[])
   vtkNew<vtkEmissionAbsorptionVolumeMapper> ea;
   vtkNew<vtkAmbientOcclusionVolumeMapper> ao;
   vtkNew<vtkAmbientScatteringVolumeMapper> as1;
+  vtkNew<vtkAmbientScatteringVolumeMapper> asx1; // the extended model (the default)
   vtkNew<vtkAmbientScatteringVolumeMapper> as4;
   vtkNew<vtkAmbientScatteringVolumeMapper> asx4; // the extended model (the default)
   asx4->SetScatteringModelToExtended();
+  asx1->SetScatteringModelToExtended();
   as1->SetScatteringModelToPaper(); // the paper's model, as issue 16's targets were set
   as4->SetScatteringModelToPaper();
   if (lightGrid > 0)
   {
     as1->SetLightVolumeMaximumDimension(lightGrid);
+    asx1->SetLightVolumeMaximumDimension(lightGrid);
     as4->SetLightVolumeMaximumDimension(lightGrid);
     asx4->SetLightVolumeMaximumDimension(lightGrid);
   }
   for (vtkAVSVolumeMapper* m : { static_cast<vtkAVSVolumeMapper*>(ea),
          static_cast<vtkAVSVolumeMapper*>(ao),
          static_cast<vtkAVSVolumeMapper*>(as1),
+         static_cast<vtkAVSVolumeMapper*>(asx1),
          static_cast<vtkAVSVolumeMapper*>(as4),
          static_cast<vtkAVSVolumeMapper*>(asx4) })
   {
@@ -524,6 +572,7 @@ int main(int argc, char* argv[])
            static_cast<vtkVolumeMapper*>(ea),
            static_cast<vtkVolumeMapper*>(ao),
            static_cast<vtkVolumeMapper*>(as1),
+           static_cast<vtkVolumeMapper*>(asx1),
            static_cast<vtkVolumeMapper*>(as4),
            static_cast<vtkVolumeMapper*>(asx4) })
     {
@@ -551,13 +600,15 @@ int main(int argc, char* argv[])
   std::vector<Bench::Timing> one;
   if (!modelsOnly)
   {
-    one = b.MeasureEach({ vtkEA, ea, ao, as1 });
-    std::printf("bench frame_vtk_ea %.4f s\n", one[0].Median);
-    std::printf("bench frame_ea %.4f s\n", one[1].Median);
-    std::printf("bench frame_ao %.4f s\n", one[2].Median);
-    std::printf("bench first_frame_ao %.4f s\n", one[2].First);
-    std::printf("bench frame_as1 %.4f s\n", one[3].Median);
-    std::printf("bench first_frame_as1 %.4f s\n", one[3].First);
+    one = b.MeasureEach({ vtkEA, ea, ao, as1, asx1 });
+    std::printf("bench %s %.4f s\n", name("frame_vtk_ea").c_str(), one[0].Median);
+    std::printf("bench %s %.4f s\n", name("frame_ea").c_str(), one[1].Median);
+    std::printf("bench %s %.4f s\n", name("frame_ao").c_str(), one[2].Median);
+    std::printf("bench %s %.4f s\n", name("first_frame_ao").c_str(), one[2].First);
+    std::printf("bench %s %.4f s\n", name("frame_as1").c_str(), one[3].Median);
+    std::printf("bench %s %.4f s\n", name("first_frame_as1").c_str(), one[3].First);
+    std::printf("bench %s %.4f s\n", name("frame_asx1").c_str(), one[4].Median);
+    std::printf("bench %s %.4f s\n", name("first_frame_asx1").c_str(), one[4].First);
   }
   b.SetLights(4);
   std::vector<Bench::Timing> four =
@@ -567,20 +618,28 @@ int main(int argc, char* argv[])
     four.insert(four.begin(), Bench::Timing());
   }
   const double modelsRatio = Bench::RatioOf(four[1], four[2]);
-  std::printf("bench frame_as4 %.4f s\n", four[1].Median);
-  std::printf("bench first_frame_as4 %.4f s\n", four[1].First);
-  std::printf("bench frame_asx4 %.4f s\n", four[2].Median);
-  std::printf("bench first_frame_asx4 %.4f s\n", four[2].First);
+  std::printf("bench %s %.4f s\n", name("frame_as4").c_str(), four[1].Median);
+  std::printf("bench %s %.4f s\n", name("first_frame_as4").c_str(), four[1].First);
+  std::printf("bench %s %.4f s\n", name("frame_asx4").c_str(), four[2].Median);
+  std::printf("bench %s %.4f s\n", name("first_frame_asx4").c_str(), four[2].First);
+  // The frames' ratios: ours against VTK's EA, each ambient-scattering mapper against our EA
+  // (the paper's model as and as4, the extended one asx and asx4).
+  auto frameRatios = [&]()
+  {
+    std::printf("ratio %s %.3f\n", name("ea_over_vtk_ea").c_str(), Bench::RatioOf(one[0], one[1]));
+    std::printf("ratio %s %.3f\n", name("as_over_ea").c_str(), Bench::RatioOf(one[1], one[3]));
+    std::printf("ratio %s %.3f\n", name("asx_over_ea").c_str(), Bench::RatioOf(one[1], one[4]));
+    std::printf("ratio %s %.3f\n", name("as4_over_ea").c_str(), Bench::RatioOf(four[0], four[1]));
+    std::printf("ratio %s %.3f\n", name("asx4_over_ea").c_str(), Bench::RatioOf(four[0], four[2]));
+    std::printf("ratio %s %.3f\n", name("ao_over_ea").c_str(), Bench::RatioOf(one[1], one[2]));
+  };
   if (framesOnly)
   {
     if (!modelsOnly)
     {
-      std::printf("ratio ea_over_vtk_ea %.3f\n", Bench::RatioOf(one[0], one[1]));
-      std::printf("ratio as_over_ea %.3f\n", Bench::RatioOf(one[1], one[3]));
-      std::printf("ratio as4_over_ea %.3f\n", Bench::RatioOf(four[0], four[1]));
-      std::printf("ratio ao_over_ea %.3f\n", Bench::RatioOf(one[1], one[2]));
+      frameRatios();
     }
-    std::printf("ratio asx4_over_as4 %.3f\n", modelsRatio);
+    std::printf("ratio %s %.3f\n", name("asx4_over_as4").c_str(), modelsRatio);
     return 0;
   }
 
@@ -639,25 +698,24 @@ int main(int argc, char* argv[])
     tfRebuildX = Median(tf[1]);
     lightRebuildX = Median(light[1]);
   }
-  std::printf("bench rebuild_transfer_function_as4 %.4f s\n", tfRebuild);
-  std::printf("bench rebuild_light_move_as4 %.4f s\n", lightRebuild);
-  std::printf("bench rebuild_transfer_function_asx4 %.4f s\n", tfRebuildX);
-  std::printf("bench rebuild_light_move_asx4 %.4f s\n", lightRebuildX);
+  std::printf("bench %s %.4f s\n", name("rebuild_transfer_function_as4").c_str(), tfRebuild);
+  std::printf("bench %s %.4f s\n", name("rebuild_light_move_as4").c_str(), lightRebuild);
+  std::printf("bench %s %.4f s\n", name("rebuild_transfer_function_asx4").c_str(), tfRebuildX);
+  std::printf("bench %s %.4f s\n", name("rebuild_light_move_asx4").c_str(), lightRebuildX);
 
   if (modelsOnly)
   {
-    std::printf("ratio asx4_over_as4 %.3f\n", modelsRatio);
-    std::printf("ratio tf_rebuild_asx4_over_as4 %.3f\n", tfRebuildX / tfRebuild);
+    std::printf("ratio %s %.3f\n", name("asx4_over_as4").c_str(), modelsRatio);
+    std::printf(
+      "ratio %s %.3f\n", name("tf_rebuild_asx4_over_as4").c_str(), tfRebuildX / tfRebuild);
     return 0;
   }
-  std::printf("ratio ea_over_vtk_ea %.3f\n", Bench::RatioOf(one[0], one[1]));
-  std::printf("ratio as_over_ea %.3f\n", Bench::RatioOf(one[1], one[3]));
-  std::printf("ratio as4_over_ea %.3f\n", Bench::RatioOf(four[0], four[1]));
-  std::printf("ratio ao_over_ea %.3f\n", Bench::RatioOf(one[1], one[2]));
-  std::printf("ratio tf_rebuild_over_ea_frame %.3f\n", tfRebuild / four[0].Median);
-  std::printf("ratio asx4_over_as4 %.3f\n", modelsRatio);
-  std::printf("ratio tf_rebuild_asx4_over_as4 %.3f\n", tfRebuildX / tfRebuild);
-  if (!RunInteraction(b, lightGrid))
+  frameRatios();
+  std::printf(
+    "ratio %s %.3f\n", name("tf_rebuild_over_ea_frame").c_str(), tfRebuild / four[0].Median);
+  std::printf("ratio %s %.3f\n", name("asx4_over_as4").c_str(), modelsRatio);
+  std::printf("ratio %s %.3f\n", name("tf_rebuild_asx4_over_as4").c_str(), tfRebuildX / tfRebuild);
+  if (!RunInteraction(b, lightGrid, suffix))
   {
     std::fprintf(stderr, "avs-bench-mappers: light volumes were rebuilt while interacting\n");
     return 1;

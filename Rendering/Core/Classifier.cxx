@@ -25,11 +25,22 @@ double NearestClamped(const Grid& g, const Vec3& p)
   return g.At(i[0], i[1], i[2]);
 }
 
-// Largest sigma_t of the (linearly interpolated) opacity table over the values [lo, hi].
-double MaximumExtinction(const TransferFunction& tf, double unitDistance, double lo, double hi)
+// Largest sigma_t of the (linearly interpolated) opacity table over the values [lo, hi], that
+// range widened by `widen` table nodes on either side.
+double MaximumExtinction(const TransferFunction& tf,
+  double unitDistance,
+  double lo,
+  double hi,
+  double widen = 0.0)
 {
-  double alpha = std::max(tf.OpacityAt(lo), tf.OpacityAt(hi));
   const std::size_t n = tf.Opacity.size();
+  if (n > 1 && tf.Maximum > tf.Minimum)
+  {
+    const double step = (tf.Maximum - tf.Minimum) / (n - 1);
+    lo -= widen * step;
+    hi += widen * step;
+  }
+  double alpha = std::max(tf.OpacityAt(lo), tf.OpacityAt(hi));
   if (n > 1 && tf.Maximum > tf.Minimum)
   {
     const double step = (tf.Maximum - tf.Minimum) / (n - 1);
@@ -294,14 +305,16 @@ double Classifier::Bound(const std::array<int, 3>& lo, const std::array<int, 3>&
           high[c] = std::max(high[c], v);
         }
       }
-  if (!any)
-  {
-    return 0.0;
-  }
+  return any ? this->BoundOfValues(low, high, false) : 0.0;
+}
+
+double Classifier::BoundOfValues(const double low[4], const double high[4], bool widen) const
+{
   // Gradient opacity, validity and a binary mask only lower sigma_t; a label's medium is mixed
   // with the unlabelled one, so the larger of the two bounds both.
+  const double nodes = widen ? 1.0 : 0.0;
   auto bound = [&](int c)
-  { return MaximumExtinction(*this->Transfer[c], this->UnitDistance[c], low[c], high[c]); };
+  { return MaximumExtinction(*this->Transfer[c], this->UnitDistance[c], low[c], high[c], nodes); };
   const MediumOptions& m = this->Medium;
   double result = 0.0;
   switch (m.Mode)
@@ -312,7 +325,8 @@ double Classifier::Bound(const std::array<int, 3>& lo, const std::array<int, 3>&
       {
         for (const TransferFunction& t : m.Labels)
         {
-          result = std::max(result, MaximumExtinction(t, this->UnitDistance[0], low[0], high[0]));
+          result =
+            std::max(result, MaximumExtinction(t, this->UnitDistance[0], low[0], high[0], nodes));
         }
       }
       break;

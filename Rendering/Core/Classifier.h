@@ -43,6 +43,10 @@ public:
   /// An upper bound of sigma_t anywhere the samples come from the lattice points lo..hi
   /// (inclusive, per axis): the path tracer's majorant of a cell.
   double Bound(const std::array<int, 3>& lo, const std::array<int, 3>& hi) const;
+  /// An upper bound of sigma_t anywhere the components' values lie in [low[c], high[c]] (what
+  /// Bound takes over the lattice points' values); `widen` widens each range by one node of
+  /// the table it is looked up in (the GPU's table coordinate is rounded: OccupancyGrid.h).
+  double BoundOfValues(const double low[4], const double high[4], bool widen) const;
 
   int NumberOfComponents() const { return this->Count; }
 

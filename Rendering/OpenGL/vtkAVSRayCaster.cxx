@@ -14,6 +14,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkVolumeMapper.h"
 
 #include <algorithm>
 #include <cmath>
@@ -318,6 +319,14 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     frame.Parameters.Model == avs::ScatteringModel::Extended;
   const bool packed =
     frame.Mode == avs::RenderMode::AmbientScattering && !extended && tx.HasAveragedIn(lightCount);
+  // Empty-space skipping: not for the blend modes other than composite (they read every
+  // sample's scalar) nor for ambient scattering's explicit look-ahead (a sample adds the light
+  // of one ahead of it).
+  const bool skip = frame.SkipEmptySpace && tx.Occupancy &&
+    !(blend && frame.Blend.Mode != vtkVolumeMapper::COMPOSITE_BLEND) &&
+    !(frame.Mode == avs::RenderMode::AmbientScattering &&
+      vtkAVSShaderAssembly::RingSize(frame.Parameters) == 0);
+  this->LastSkipped = false;
   if (!this->EnsureProgram(frame.Mode,
         vtkAVSShaderAssembly::RayCastDefines(frame.Mode,
           frame.Parameters,
@@ -328,7 +337,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
           frame.LightsPerPair) +
           vtkAVSShaderOptions::ClipDefines(frame.Clip) +
           (blend ? vtkAVSShaderOptions::BlendDefines(frame.Blend) : std::string()) +
-          (bricked ? "#define AVS_BRICKED\n" : "")))
+          (bricked ? "#define AVS_BRICKED\n" : "") + (skip ? "#define AVS_SKIP\n" : "")))
   {
     error = "the ray-casting shader did not compile or link (see the log above)";
     return false;
@@ -366,6 +375,17 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     program->SetUniformi("u_scalars", tx.Scalars->GetTextureUnit());
   }
   tx.Classification.Bind(static_cast<unsigned int>(program->GetHandle()));
+  if (skip)
+  {
+    tx.Occupancy->Activate();
+    program->SetUniformi("u_occupancy", tx.Occupancy->GetTextureUnit());
+    const std::array<int, 3>& cells = tx.ValueRanges.Cells();
+    const float count[3] = {
+      static_cast<float>(cells[0]), static_cast<float>(cells[1]), static_cast<float>(cells[2])
+    };
+    program->SetUniform3f("u_occupancyCells", count);
+    program->SetUniformf("u_cellSize", static_cast<float>(tx.ValueRanges.CellSize()));
+  }
   // The pass: one quad, or one per brick back to front (vtkAVSBricks), each composited over
   // what the bricks behind it left, in the image sampler's half-float target (at every image
   // sample distance: the framebuffer's 8 bits would round each brick's composite).
@@ -521,6 +541,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   for (vtkTextureObject* t : { this->Depth.GetTexture(),
          tx.Scalars.Get(),
          tx.Occlusion.Get(),
+         tx.Occupancy.Get(),
          tx.AveragedExtinction.Get(),
          tx.LightVolumes[0].Get(),
          tx.LightVolumes[1].Get(),
@@ -536,6 +557,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     error = "OpenGL error " + std::to_string(status) + " while drawing the volume";
     return false;
   }
+  this->LastSkipped = skip;
   return true;
 }
 

@@ -193,11 +193,18 @@ public:
     /// where auto exposure is on) and the tone curve (avs_display.glsl), applied once, where
     /// the ray ends or, for a pass through the image sampler's target, as it is composited.
     avs::DisplayTransform Display;
+    /// Leap over the empty cells (avs_skip.glsl) where the frame allows it: the composite
+    /// blend, and for ambient scattering the ring's look-ahead.
+    bool SkipEmptySpace = true;
   };
 
   /// Draws the volume into the current viewport (the renderer's, or a render pass's). Returns
   /// false when the program cannot be built (nothing drawn) or OpenGL reported an error.
   bool Render(vtkRenderer* renderer, const Frame& frame, std::string& error);
+  /// Whether the last Render leapt over empty cells, and the share of the volume's cells that
+  /// are empty for the current transfer functions (vtkAVSVolumeTextures::Occupancy).
+  bool GetLastSkippedEmptySpace() const { return this->LastSkipped; }
+  double GetEmptyCellFraction() const { return this->Textures.EmptyCellFraction; }
   /// Rays the last Render cast along x and y.
   const std::array<int, 2>& GetLastPassSize() const { return this->LastPassSize; }
 
@@ -211,6 +218,7 @@ private:
   vtkAVSVolumeTextures Textures;
   vtkAVSDiffuseVolume Diffuse; ///< the extended model's fluence
   vtkAVSDepthCopy Depth;       ///< where the rays end at opaque geometry
+  bool LastSkipped = false;
   vtkAVSAveragedExtinctionPass AveragedExtinctionPass;
   vtkAVSLightVolumePass LightVolumePass;
   vtkAVSOcclusionPass OcclusionPass;

@@ -45,6 +45,20 @@ void Replace(std::string& s, const std::string& what, const std::string& with)
 }
 } // namespace
 
+int vtkAVSShaderAssembly::RingSize(const avs::ScatteringParameters& p)
+{
+  // A ray of two or more steps has dt >= sample distance / 2, so the look-ahead k = floor(r /
+  // dt), which needs k + 2 entries, is at most 2 r / sample distance; a ray of one step adds no
+  // in-scattered light.
+  const double most = 2.0 * p.AmbientRadius / p.SampleDistance + 2.0;
+  int ring = 16;
+  while (ring < most && ring <= vtkAVSRayCaster::MaximumRingSize)
+  {
+    ring *= 2;
+  }
+  return ring > vtkAVSRayCaster::MaximumRingSize ? 0 : ring;
+}
+
 std::string vtkAVSShaderAssembly::RayCastDefines(avs::RenderMode mode,
   const avs::ScatteringParameters& p,
   const std::vector<avs::Light>& lights,
@@ -78,18 +92,9 @@ std::string vtkAVSShaderAssembly::RayCastDefines(avs::RenderMode mode,
     }
     return defines;
   }
-  // A ray of two or more steps has dt >= sample distance / 2, so the look-ahead k = floor(r /
-  // dt), which needs k + 2 entries, is at most 2 r / sample distance; a ray of one step adds no
-  // in-scattered light.
-  const double most = 2.0 * p.AmbientRadius / p.SampleDistance + 2.0;
-  int ring = 16;
-  while (ring < most && ring <= vtkAVSRayCaster::MaximumRingSize)
-  {
-    ring *= 2;
-  }
-  defines += ring > vtkAVSRayCaster::MaximumRingSize
-    ? "#define AVS_LOOKAHEAD_EXPLICIT\n"
-    : "#define AVS_RING " + std::to_string(ring) + "\n";
+  const int ring = RingSize(p);
+  defines += ring == 0 ? "#define AVS_LOOKAHEAD_EXPLICIT\n"
+                       : "#define AVS_RING " + std::to_string(ring) + "\n";
   // The extended model: the diffuse fluence with the averaged extinction in one fetch
   // (vtkAVSDiffuseVolume), in place of the averaged extinction's.
   const bool extended = p.Model == avs::ScatteringModel::Extended;
@@ -142,6 +147,7 @@ std::string vtkAVSShaderAssembly::RayCastFragmentShader(avs::RenderMode mode,
   Replace(fs, "//AVS::Display::Dec", avs_display);
   Replace(fs, "//AVS::Clip::Dec", avs_clip);
   Replace(fs, "//AVS::Effect::Dec", dec);
+  Replace(fs, "//AVS::Skip::Dec", avs_skip);
   Replace(fs, "//AVS::Effect::Init", init);
   Replace(fs, "//AVS::Effect::Pair", pair);
   Replace(fs, "//AVS::Effect::Sample", sample);

@@ -6,7 +6,7 @@
  * (avs_classify.glsl), the lights (avs_lights.glsl), the clipping (avs_clip.glsl) and one effect
  * file (avs_ea_effect.glsl, avs_blend_effect.glsl, avs_ao_effect.glsl or avs_as_effect.glsl,
  * split at its //AVS::Effect::Init, //AVS::Effect::Pair and //AVS::Effect::Sample markers) put
- * in at its markers,
+ * in at its markers, and empty-space skipping (avs_skip.glsl, where AVS_SKIP is defined),
  * after the frame's compile-time choices (RayCastDefines). The compute passes' sources get their
  * defines after the #version line; the averaged-extinction pass gets the same classification and
  * clipping snippets as the ray caster, so the two cannot drift apart.
@@ -34,6 +34,9 @@ public:
   /// it, vtkAVSVolumeTextures::AveragedSlot, or -1 for its own texture), and whether the lights
   /// are read once per pair of samples (`lightsPerPair`, avs::ScatteringParameters::LightsPerPair).
   /// One program per combination.
+  /// Ambient scattering's ring buffer of the look-ahead (entries), 0 where the radius needs
+  /// more than vtkAVSRayCaster::MaximumRingSize (the explicit look-ahead).
+  static int RingSize(const avs::ScatteringParameters& parameters);
   static std::string RayCastDefines(avs::RenderMode mode,
     const avs::ScatteringParameters& parameters,
     const std::vector<avs::Light>& lights,

@@ -23,6 +23,7 @@ void vtkAVSVolumeTextures::ReleaseGraphicsResources(vtkWindow* window)
   for (vtkTextureObject* t : { this->Scalars.Get(),
          this->AveragedExtinction.Get(),
          this->Occlusion.Get(),
+         this->Occupancy.Get(),
          this->Table.Get(),
          this->LightVolumes[0].Get(),
          this->LightVolumes[1].Get(),
@@ -38,6 +39,7 @@ void vtkAVSVolumeTextures::ReleaseGraphicsResources(vtkWindow* window)
   this->ReleaseBricks(window);
   this->Bricks.Clear();
   this->Scalars = this->AveragedExtinction = this->Occlusion = this->Table = nullptr;
+  this->Occupancy = nullptr;
   for (auto& t : this->LightVolumes)
   {
     t = nullptr;
@@ -281,6 +283,33 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
     error = "the scalars are neither on the host nor readable";
     return false;
   }
+  // The components' value range per cell, for empty-space skipping (UploadOccupancy): cells of
+  // the default size, or larger where the cells along an axis would exceed the 3D-texture limit
+  // (a volume that long is split into bricks; its grid stays whole).
+  int cellSize = avs::ValueRangeGrid::DefaultCellSize;
+  const int largest = std::max(1, this->MaximumTextureSize3D());
+  for (int a = 0; a < 3; ++a)
+  {
+    cellSize = std::max(cellSize, (dimensions[a] + largest - 1) / largest);
+  }
+  this->ValueRanges = avs::ValueRangeGrid(
+    dimensions,
+    layout.Components,
+    cellSize,
+    [&scene, &source](int c, std::size_t begin, std::size_t end, float* out)
+    {
+      const std::vector<float>& grid =
+        c == 0 ? scene.Scalars.Values : scene.Medium.Components[c - 1].Values.Values;
+      if (grid.empty())
+      {
+        source.Read(c, begin, end, out);
+      }
+      else
+      {
+        std::copy(grid.begin() + begin, grid.begin() + end, out);
+      }
+    },
+    scene.Medium.Validity.Values);
   std::array<int, 3> ghost;
   for (int a = 0; a < 3; ++a)
   {
@@ -307,7 +336,7 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
     this->ScalarLayout = layout;
     this->ScalarFormat = format;
     this->Classification.SetValueMap(format.Scale, format.Shift);
-    return true;
+    return this->UploadOccupancy(scene, error);
   }
   const std::size_t slice = static_cast<std::size_t>(scene.Scalars.Geometry.Dimensions[0]) *
     scene.Scalars.Geometry.Dimensions[1];
@@ -351,7 +380,7 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
   this->ScalarLayout = layout;
   this->ScalarFormat = format;
   this->Classification.SetValueMap(format.Scale, format.Shift);
-  return true;
+  return this->UploadOccupancy(scene, error);
 }
 
 void vtkAVSVolumeTextures::ReleaseBricks(vtkWindow* window)
@@ -420,6 +449,43 @@ bool vtkAVSVolumeTextures::UploadClassification(const avs::VolumeScene& scene, s
   }
   this->Classification.SetValueMap(this->ScalarFormat.Scale, this->ScalarFormat.Shift);
   this->NotePeak(); // the mask and validity textures count too
+  return this->UploadOccupancy(scene, error);
+}
+
+bool vtkAVSVolumeTextures::UploadOccupancy(const avs::VolumeScene& scene, std::string& error)
+{
+  if (this->ValueRanges.Empty() ||
+    this->ValueRanges.Dimensions() != scene.Scalars.Geometry.Dimensions)
+  {
+    return true; // no scalars yet: UploadScalars comes back here
+  }
+  std::vector<unsigned char> occupied = avs::Occupancy(this->ValueRanges, avs::Classifier(scene));
+  this->EmptyCellFraction = avs::EmptyFraction(occupied);
+  for (unsigned char& o : occupied)
+  {
+    o = o ? 255 : 0;
+  }
+  vtkAVSTextureUpload::TexelFormat format;
+  format.InternalFormat = GL_R8;
+  format.HostType = VTK_UNSIGNED_CHAR;
+  format.Scale = 255.0f;
+  const std::array<int, 3>& cells = this->ValueRanges.Cells();
+  const std::size_t slice = static_cast<std::size_t>(cells[0]) * cells[1];
+  if (!vtkAVSTextureUpload::Upload(
+        this->Window,
+        this->Occupancy,
+        cells,
+        1,
+        format,
+        [&occupied, slice](int z0, int, void*) -> const void*
+        { return occupied.data() + slice * z0; },
+        this->BudgetTextures(),
+        error))
+  {
+    return false;
+  }
+  SetVolumeFilter(this->Occupancy, true); // one texel per cell (read with texelFetch)
+  this->NotePeak();
   return true;
 }
 
@@ -439,6 +505,7 @@ std::vector<vtkTextureObject*> vtkAVSVolumeTextures::VolumeTextures() const
   std::vector<vtkTextureObject*> held = { this->Scalars,
     this->AveragedExtinction,
     this->Occlusion,
+    this->Occupancy,
     this->LightVolumes[0],
     this->LightVolumes[1],
     this->Scratch[0],

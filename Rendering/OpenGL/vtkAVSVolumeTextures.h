@@ -15,6 +15,7 @@
 #define vtkAVSVolumeTextures_h
 
 #include "Grid.h"
+#include "OccupancyGrid.h"
 #include "ReferenceRenderer.h"
 #include "ScatteringTable.h"
 #include "vtkAVSBricks.h"
@@ -102,6 +103,10 @@ public:
     const std::array<int, 3>& lookBack,
     std::string& error);
   bool UploadClassification(const avs::VolumeScene& scene, std::string& error);
+  /// The occupancy of the scene's cells (avs::Occupancy) for its transfer functions, from the
+  /// value ranges UploadScalars took, as an 8-bit texture (Occupancy); done by UploadScalars
+  /// and UploadClassification.
+  bool UploadOccupancy(const avs::VolumeScene& scene, std::string& error);
   bool UploadAveraged(const avs::Grid& averaged, std::string& error);
   bool UploadLightVolumes(const std::vector<avs::Grid>& lights, std::string& error);
   bool UploadOcclusion(const avs::Grid& occlusion, std::string& error);
@@ -132,6 +137,12 @@ public:
   /// Weak: the window may be deleted before the mapper, and its context took its resources.
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   vtkSmartPointer<vtkTextureObject> Scalars, Occlusion, Table;
+  /// Empty-space skipping (avs_skip.glsl): each component's value range per cell of the
+  /// scalars (taken at their upload), and the occupancy of the cells, one 8-bit texel each
+  /// (255: a sample there may have material), with the share of empty cells.
+  avs::ValueRangeGrid ValueRanges;
+  vtkSmartPointer<vtkTextureObject> Occupancy;
+  double EmptyCellFraction = 0.0;
   /// The bricks of a split volume (vtkAVSBricks; one unsplit brick otherwise) and, when split,
   /// their scalar textures (in the order of Bricks.GetBricks()).
   vtkAVSBricks Bricks;

@@ -251,6 +251,31 @@ bool EffectContinues(float T, int i)
     g_ring[(i - g_lag - 1 + AVS_RING) & (AVS_RING - 1)] >= u_termination;
 }
 #endif
+
+#ifndef AVS_LOOKAHEAD_EXPLICIT
+// Empty-space skipping (avs_skip.glsl; not with the explicit look-ahead, whose sample i adds the
+// light of sample i + k + 1): the samples [from, to) were empty and leapt over, T held over
+// them, and the ring keeps it for those it reads again (k + 1 and k + 2 back from `to` on).
+#define AVS_EFFECT_LEAP
+void EffectLeap(int from, int to)
+{
+  for (int s = max(from, to - g_lag - 2); s < to; ++s)
+  {
+    g_ring[s & (AVS_RING - 1)] = T;
+  }
+}
+#endif
+#if defined(AVS_SAMPLE_PAIRS) && defined(AVS_DIFFUSE)
+// A ray that leapt to `pair` read no lights at the pairs before it: dphi/dt of its first pair
+// after the leap takes phi of the pair before (two steps back), as the unleapt ray's does.
+#define AVS_EFFECT_LAND_PAIR
+void EffectLandPair(int pair)
+{
+  float tb = LightT(max(pair - 2, 0));
+  g_phiBefore = textureLod(u_diffuse, (io + tb * id) * g_lightScale + g_lightOffset, 0.0).rgb;
+  g_phiBeforeIndex = pair - 2;
+}
+#endif
 //AVS::Effect::Init
   g_lag = int(floor(u_ambientRadius / dt));
   g_lagFraction = u_ambientRadius / dt - float(g_lag);

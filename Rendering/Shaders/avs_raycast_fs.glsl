@@ -96,6 +96,9 @@ float T = 1.0; // transmittance so far
 
 //AVS::Effect::Dec
 
+// Leap(i): empty-space skipping where AVS_SKIP is defined (avs_skip.glsl).
+//AVS::Skip::Dec
+
 float Hash(vec2 p)
 {
   return fract(sin(dot(p, vec2(12.9898, 78.233))) * 43758.5453);
@@ -204,6 +207,24 @@ void main()
 #endif
   for (int pair = firstPair; pair < steps; pair += 2)
   {
+#ifdef AVS_SKIP
+    if (pair >= g_checkFrom)
+    {
+      // Over the empty cells to the pair of the first sample that may have material (the
+      // effect's EffectLandPair reads what the pairs leapt over would have left).
+      int j = Leap(pair);
+      if (j >= steps)
+        break;
+      int landing = j - ((j - firstPair) & 1);
+      if (landing > pair)
+      {
+#ifdef AVS_EFFECT_LAND_PAIR
+        EffectLandPair(landing);
+#endif
+        pair = landing;
+      }
+    }
+#endif
     if (!EffectContinues(T, max(pair, 0)))
       break;
     //AVS::Effect::Pair
@@ -223,6 +244,15 @@ void main()
 #else
   for (int i = 0; i < steps; ++i)
   {
+#ifdef AVS_SKIP
+    if (i >= g_checkFrom)
+    {
+      // Over the empty cells; the test below then sees T after them, as the unleapt ray would.
+      i = Leap(i);
+      if (i >= steps)
+        break;
+    }
+#endif
 #ifdef AVS_EFFECT_TERMINATION
     // The effect decides (it may still have light to add after T fell below the threshold).
     if (!EffectContinues(T, i))

@@ -1,0 +1,302 @@
+// Empty-space skipping (vtkAVSVolumeMapper::EmptySpaceSkipping) changes no picture: each mapper
+// (EA, AO, ambient scattering in the paper's and the extended model) renders each volume with
+// and without it, and the pictures are the same to one level of 255 (the rays take the same
+// samples, so they are bit for bit equal where the compiler keeps the arithmetic), while the
+// frame with it did leap (LastSkippedEmptySpace) over a volume whose cells are largely empty
+// (LastEmptyCellFraction). Volumes: the shell with its core, clipped by two planes, cropped
+// (fence), with a binary mask and a label map, two independent components, two dependent
+// ones, NaN voxels, gradient opacity, split into bricks, jittered, at image sample distance 2,
+// and a transfer function whose opacity is a narrow band. The blend modes other than composite
+// and ambient scattering's explicit look-ahead (a radius beyond the ring) do not leap, and say
+// so. (Against the CPU reference the pictures are compared, with skipping on, by
+// TestMappersAgainstReference, TestMasks, TestComponents, TestBricking and the others.)
+#include "DataTestScene.h"
+
+#include "vtkAmbientOcclusionVolumeMapper.h"
+#include "vtkAmbientScatteringVolumeMapper.h"
+#include "vtkEmissionAbsorptionVolumeMapper.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <string>
+
+namespace
+{
+constexpr int N = 64;     // voxels per axis: 8 cells of 8
+constexpr int Size = 128; // pixels
+
+// The largest difference of two RGB pictures, in levels of 255.
+double MaximumDifference(vtkImageData* a, vtkImageData* b)
+{
+  vtkDataArray* x = a->GetPointData()->GetScalars();
+  vtkDataArray* y = b->GetPointData()->GetScalars();
+  double most = 0.0;
+  for (vtkIdType i = 0; i < x->GetNumberOfTuples(); ++i)
+    for (int c = 0; c < 3; ++c)
+      most = std::max(most, std::abs(x->GetComponent(i, c) - y->GetComponent(i, c)));
+  return most;
+}
+
+struct Case
+{
+  std::string Name;
+  vtkSmartPointer<vtkImageData> Data;
+  vtkSmartPointer<vtkVolumeProperty> Property;
+  std::function<void(vtkAVSVolumeMapper*)> Configure; ///< may be empty
+  bool Leaps = true;                                  ///< whether the frame is expected to leap
+  double MostEmpty = 0.25;                            ///< at least this share of the cells is empty
+};
+
+vtkSmartPointer<vtkImageData> Shell()
+{
+  auto image = MakeTestImage(N);
+  image->GetPointData()->SetScalars(AddArray(image, "shell", 1, false, ShellValue));
+  return image;
+}
+
+vtkSmartPointer<vtkVolumeProperty> Property()
+{
+  auto property = MakeTestProperty();
+  property->SetScalarOpacityUnitDistance(0.15);
+  return property;
+}
+} // namespace
+
+int main()
+{
+  std::vector<Case> cases;
+  cases.push_back({ "shell", Shell(), Property(), nullptr });
+  cases.push_back({ "clipped",
+    Shell(),
+    Property(),
+    [](vtkAVSVolumeMapper* m)
+    {
+      vtkNew<vtkPlane> a, b;
+      a->SetOrigin(0.1, 0.0, 0.0);
+      a->SetNormal(-1, -0.2, 0.1);
+      b->SetOrigin(0.0, -0.3, 0.0);
+      b->SetNormal(0.1, 1, 0.3);
+      m->AddClippingPlane(a);
+      m->AddClippingPlane(b);
+    } });
+  cases.push_back({ "cropped",
+    Shell(),
+    Property(),
+    [](vtkAVSVolumeMapper* m)
+    {
+      m->CroppingOn();
+      m->SetCroppingRegionPlanes(0.4, 1.2, 0.4, 1.2, 0.5, 1.4);
+      m->SetCroppingRegionFlagsToFence();
+    } });
+  {
+    // A mask of the volume's points: label 1 where x < -0.2, 2 where y > 0.3, else 0.
+    auto mask = MakeTestImage(N);
+    vtkFloatArray* labels = AddArray(mask,
+      "labels",
+      1,
+      false,
+      [](double x, double y, double) -> std::array<double, 4> {
+        return { x < -0.2 ? 1.0 : (y > 0.3 ? 2.0 : 0.0), 0, 0, 0 };
+      });
+    vtkNew<vtkUnsignedCharArray> bytes;
+    bytes->SetNumberOfTuples(labels->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < bytes->GetNumberOfTuples(); ++i)
+    {
+      bytes->SetValue(i, static_cast<unsigned char>(labels->GetValue(i)));
+    }
+    mask->GetPointData()->SetScalars(bytes);
+    cases.push_back({ "binary mask",
+      Shell(),
+      Property(),
+      [mask](vtkAVSVolumeMapper* m)
+      {
+        m->SetMaskInput(mask);
+        m->SetMaskTypeToBinary();
+      } });
+    auto labelled = Property();
+    vtkNew<vtkColorTransferFunction> red;
+    red->AddRGBPoint(0, 1, 0.2, 0.1);
+    vtkNew<vtkPiecewiseFunction> low;
+    low->AddPoint(0, 0.0);
+    low->AddPoint(200, 0.3); // opacity where the unlabelled function has none
+    low->AddPoint(900, 0.3);
+    labelled->SetLabelColor(1, red);
+    labelled->SetLabelScalarOpacity(1, low);
+    cases.push_back({ "label map",
+      Shell(),
+      labelled,
+      [mask](vtkAVSVolumeMapper* m)
+      {
+        m->SetMaskInput(mask);
+        m->SetMaskTypeToLabelMap();
+        m->SetMaskBlendFactor(0.7f);
+      },
+      true,
+      0.0 });
+  }
+  {
+    auto image = MakeTestImage(N);
+    image->GetPointData()->SetScalars(AddArray(image,
+      "two",
+      2,
+      false,
+      [](double x, double y, double z) -> std::array<double, 4> {
+        return { ShellValue(x, y, z)[0], SlabValue(x, y, z)[0], 0, 0 };
+      }));
+    auto independent = Property();
+    independent->IndependentComponentsOn();
+    independent->SetColor(1, independent->GetRGBTransferFunction(0));
+    independent->SetScalarOpacity(1, independent->GetScalarOpacity(0));
+    independent->SetScalarOpacityUnitDistance(1, 0.15);
+    cases.push_back({ "independent components", image, independent, nullptr, true, 0.1 });
+    auto dependent = Property();
+    dependent->IndependentComponentsOff();
+    cases.push_back({ "dependent components", image, dependent, nullptr, true, 0.1 });
+  }
+  {
+    // NaN voxels in a band through the shell.
+    auto image = MakeTestImage(N);
+    image->GetPointData()->SetScalars(AddArray(image,
+      "nan",
+      1,
+      false,
+      [](double x, double y, double z) -> std::array<double, 4> {
+        return { std::abs(x + y) < 0.1 ? std::nan("") : ShellValue(x, y, z)[0], 0, 0, 0 };
+      }));
+    cases.push_back({ "NaN voxels", image, Property(), nullptr });
+  }
+  {
+    auto gradient = Property();
+    vtkNew<vtkPiecewiseFunction> g;
+    g->AddPoint(0, 0.2);
+    g->AddPoint(200, 1.0);
+    gradient->SetGradientOpacity(g);
+    cases.push_back({ "gradient opacity", Shell(), gradient, nullptr });
+  }
+  cases.push_back(
+    { "bricks", Shell(), Property(), [](vtkAVSVolumeMapper* m) { m->SetPartitions(2, 2, 1); } });
+  cases.push_back(
+    { "jittered", Shell(), Property(), [](vtkAVSVolumeMapper* m) { m->UseJitteringOn(); } });
+  cases.push_back({ "image sample distance 2",
+    Shell(),
+    Property(),
+    [](vtkAVSVolumeMapper* m)
+    {
+      m->AutoAdjustSampleDistancesOff();
+      m->SetImageSampleDistance(2.0f);
+    } });
+  {
+    auto band = Property();
+    vtkNew<vtkPiecewiseFunction> o;
+    o->AddPoint(0, 0.0);
+    o->AddPoint(640, 0.0);
+    o->AddPoint(650, 0.8);
+    o->AddPoint(660, 0.0);
+    band->SetScalarOpacity(o);
+    cases.push_back({ "narrow band", Shell(), band, nullptr, true, 0.4 });
+  }
+  cases.push_back({ "maximum intensity",
+    Shell(),
+    Property(),
+    [](vtkAVSVolumeMapper* m) { m->SetBlendModeToMaximumIntensity(); },
+    false });
+
+  vtkNew<vtkRenderWindow> window;
+  PrepareTestWindow(window, Size, Size);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  AddTestLights(renderer);
+  PlaceTestCamera(renderer->GetActiveCamera());
+
+  int failures = 0;
+  int compared = 0;
+  for (const Case& c : cases)
+  {
+    for (int m = 0; m < 4; ++m)
+    {
+      if (c.Name == "maximum intensity" && m != 0)
+      {
+        continue; // an EA blend mode
+      }
+      const char* names[4] = { "EA", "AO", "AS paper", "AS extended" };
+      vtkSmartPointer<vtkAVSVolumeMapper> mappers[2];
+      vtkSmartPointer<vtkImageData> pictures[2];
+      for (int skip = 0; skip < 2; ++skip)
+      {
+        vtkSmartPointer<vtkAVSVolumeMapper> mapper;
+        if (m == 0)
+          mapper = vtkSmartPointer<vtkEmissionAbsorptionVolumeMapper>::New();
+        else if (m == 1)
+          mapper = vtkSmartPointer<vtkAmbientOcclusionVolumeMapper>::New();
+        else
+        {
+          auto as = vtkSmartPointer<vtkAmbientScatteringVolumeMapper>::New();
+          if (m == 2)
+            as->SetScatteringModelToPaper();
+          mapper = as;
+        }
+        mapper->SetInputData(c.Data);
+        mapper->SetSampleDistance(0.025);
+        mapper->UseJitteringOff();
+        if (c.Configure)
+        {
+          c.Configure(mapper);
+        }
+        mapper->SetEmptySpaceSkipping(skip);
+        pictures[skip] = RenderVolume(window, renderer, mapper, c.Property);
+        mappers[skip] = mapper;
+      }
+      const std::string what = c.Name + ", " + names[m];
+      const double most = MaximumDifference(pictures[0], pictures[1]);
+      const double fraction = mappers[1]->GetLastEmptyCellFraction();
+      const bool leapt = mappers[1]->GetLastSkippedEmptySpace() != 0;
+      std::cout << what << ": largest difference " << most << " levels, " << fraction * 100.0
+                << " % of the cells empty, " << (leapt ? "leapt" : "did not leap")
+                << ", brightness " << Brightness(pictures[0]) << "\n";
+      ++compared;
+      if (!(most <= 1.0))
+      {
+        std::cerr << "FAIL: " << what << ": the picture changed with empty-space skipping (" << most
+                  << " levels)\n";
+        ++failures;
+      }
+      if (leapt != c.Leaps || mappers[0]->GetLastSkippedEmptySpace())
+      {
+        std::cerr << "FAIL: " << what << ": expected " << (c.Leaps ? "a leap" : "no leap")
+                  << " with skipping on and none with it off\n";
+        ++failures;
+      }
+      if (c.Leaps && fraction < c.MostEmpty)
+      {
+        std::cerr << "FAIL: " << what << ": only " << fraction * 100.0
+                  << " % of the cells empty, expected at least " << c.MostEmpty * 100.0 << "\n";
+        ++failures;
+      }
+      if (!(Brightness(pictures[0]) > 0.0))
+      {
+        std::cerr << "FAIL: " << what << ": nothing drawn\n";
+        ++failures;
+      }
+    }
+  }
+  {
+    // A radius beyond the ring: ambient scattering's explicit look-ahead does not leap.
+    vtkNew<vtkAmbientScatteringVolumeMapper> as;
+    as->SetInputData(cases[0].Data);
+    as->SetSampleDistance(0.01);
+    as->SetAmbientRadius(8.0);
+    as->UseJitteringOff();
+    RenderVolume(window, renderer, as, cases[0].Property);
+    if (as->GetLastSkippedEmptySpace())
+    {
+      std::cerr << "FAIL: the explicit look-ahead leapt\n";
+      ++failures;
+    }
+  }
+  std::cout << compared << " pairs of pictures compared, " << failures << " failure(s)\n";
+  return failures == 0 ? 0 : 1;
+}
