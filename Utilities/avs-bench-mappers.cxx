@@ -35,6 +35,8 @@
 // region kept (the picture of a run without clipping), so that a run with it against one
 // without says what the clipping tests cost per frame. --scattering-models-only measures the two
 // ambient-scattering models alone (as4 and asx4: frames, rebuilds and their ratios).
+// --no-skipping turns our mappers' empty-space skipping off (what it buys: a run with it
+// against one without).
 #include "BenchScene.h"
 #include "ProceduralVolume.h"
 
@@ -69,6 +71,9 @@
 
 namespace
 {
+/// Our mappers' EmptySpaceSkipping (--no-skipping turns it off, to measure what it buys).
+bool SkipEmptySpace = true;
+
 double Median(std::vector<double> values)
 {
   std::sort(values.begin(), values.end());
@@ -330,6 +335,7 @@ bool RunInteraction(Bench& b, int lightGrid, const std::string& scene)
       mapper->SetInputData(b.Volume);
       mapper->SetSampleDistance(0.5 * b.Volume->GetSpacing()[0]);
       mapper->UseJitteringOff();
+      mapper->SetEmptySpaceSkipping(SkipEmptySpace);
       const auto o = b.Interact(mapper, b.Property);
       const bool scattering = name.rfind("as", 0) == 0;
       const std::string label = name + (scattering ? suffix : scene);
@@ -371,7 +377,7 @@ int main(int argc, char* argv[])
         "Usage: avs-bench-mappers [--voxels N] [--size N] [--frames N] [--light-grid N] "
         "[--interaction-only | --scattering-models-only] [--frames-only] "
         "[--clipping | --clipping-nothing] "
-        "[--write-scene FILE.vti] [--embryo FILE.slc]\n\n"
+        "[--write-scene FILE.vti] [--embryo FILE.slc] [--no-skipping]\n\n"
         "Median frame times of VTK's vtkGPUVolumeRayCastMapper and of the module's "
         "mappers on the built-in nebula\n(N^3 voxels, default 256), N x N pixels "
         "(default 512), over N frames (default 10), and their ratios;\nthen interactive "
@@ -387,7 +393,8 @@ int main(int argc, char* argv[])
         "--write-scene FILE.vti: write the nebula (for ParaView's peer, "
         "Utilities/ParaView) and stop.\n"
         "--embryo FILE.slc: the embryo scan (VTK's embryo.slc) in place of the nebula; its "
-        "lines end in _embryo.\n");
+        "lines end in _embryo.\n"
+        "--no-skipping: our mappers march through empty space (EmptySpaceSkipping off).\n");
       return 0;
     }
     if (arg == "--write-scene" && i + 1 < argc)
@@ -403,6 +410,11 @@ int main(int argc, char* argv[])
     if (arg == "--interaction-only")
     {
       interactionOnly = true;
+      continue;
+    }
+    if (arg == "--no-skipping")
+    {
+      SkipEmptySpace = false;
       continue;
     }
     if (arg == "--frames-only")
@@ -509,7 +521,7 @@ int main(int argc, char* argv[])
 
   const double sampleDistance = 0.5 * b.Volume->GetSpacing()[0];
   std::printf("# scene: %s %d^3, %d x %d pixels, sample distance %g, %d frames per mapper, "
-              "light volumes at most %d per axis\n",
+              "light volumes at most %d per axis, empty-space skipping %s\n",
     scene.c_str(),
     voxels,
     size,
@@ -518,7 +530,8 @@ int main(int argc, char* argv[])
     frames,
     lightGrid > 0
       ? lightGrid
-      : vtkSmartPointer<vtkAmbientScatteringVolumeMapper>::New()->GetLightVolumeMaximumDimension());
+      : vtkSmartPointer<vtkAmbientScatteringVolumeMapper>::New()->GetLightVolumeMaximumDimension(),
+    SkipEmptySpace ? "on" : "off");
 
   if (interactionOnly)
   {
@@ -562,6 +575,7 @@ int main(int argc, char* argv[])
     m->SetInputData(b.Volume);
     m->SetSampleDistance(sampleDistance);
     m->UseJitteringOff();
+    m->SetEmptySpaceSkipping(SkipEmptySpace);
   }
   if (clipping)
   {
