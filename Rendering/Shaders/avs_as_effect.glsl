@@ -37,8 +37,8 @@
 uniform sampler3D u_diffuse;
 uniform float u_anisotropy;
 uniform float u_reducedFloor; // 1 / the flux limiter's transport length
-vec3 g_phi;
-float g_averaged;
+vec3 g_phi = vec3(0.0);
+float g_averaged = 0.0;
 // The previous sample's (or pair's) phi and its index (-100: none), for phi's derivative along
 // the ray.
 vec3 g_phiBefore = vec3(0.0);
@@ -83,12 +83,14 @@ vec3 ScatteredFluence(vec3 phi, float averaged, int i, float dt)
 }
 #endif
 
-int g_lag;           // k = floor(r / dt)
-float g_lagFraction; // f = r / dt - k
+int g_lag = 0;            // k = floor(r / dt)
+float g_lagFraction = 0.0; // f = r / dt - k
 // Per-ray constants of the lookups (index -> light-volume texture coordinate, table coordinates).
-vec3 g_lightScale, g_lightOffset;
-vec2 g_tableScale, g_tableOffset;
-float g_tauScale;
+// (Set by the per-ray code; the initial values only tell the compiler so: Mesa 26 warns of
+// globals read in functions without them.)
+vec3 g_lightScale = vec3(0.0), g_lightOffset = vec3(0.0);
+vec2 g_tableScale = vec2(0.0), g_tableOffset = vec2(0.0);
+float g_tauScale = 0.0;
 float g_thetaCoordinate[8]; // per ray, for directional lights (their theta is constant on a ray)
 #ifdef AVS_TABLE_COLUMN
 // Per ray, for directional lights: A(theta_j; tau) at the table's AVS_TABLE_COLUMN tau nodes,
@@ -236,9 +238,9 @@ vec3 InScattered(vec4 classified, float tl)
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 #define AVS_SAMPLE_PAIRS
 #endif
-vec3 g_pairLight; // the current pair's light sum (AVS_SAMPLE_PAIRS)
+vec3 g_pairLight = vec3(0.0); // the current pair's light sum (AVS_SAMPLE_PAIRS)
 #ifdef AVS_DIFFUSE
-vec3 g_pairFluence; // and what its diffuse field scatters towards the camera
+vec3 g_pairFluence = vec3(0.0); // and what its diffuse field scatters towards the camera
 #endif
 #endif
 

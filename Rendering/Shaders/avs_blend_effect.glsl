@@ -23,10 +23,10 @@ uniform vec2 u_blendRange;   // the data's scalar range
 uniform vec2 u_averageRange; // AverageIPScalarRange
 #if AVS_BLEND == 5
 uniform float u_isoValues[AVS_ISO_COUNT];
-int g_isoIndex; // the contour interval of the previous sample; -1 before the first
+int g_isoIndex = -1; // the contour interval of the previous sample; -1 before the first
 #endif
-float g_value; // the extreme scalar (1, 2) or the sum (3, 4)
-int g_count;   // samples averaged (3)
+float g_value = 0.0; // the extreme scalar (1, 2) or the sum (3, 4)
+int g_count = 0;   // samples averaged (3)
 
 // Colour and opacity (as the transfer function gives it) of scalar s.
 vec4 TransferAt(float s)

@@ -34,7 +34,7 @@ uniform int u_copyAveraged;
 uniform int u_positional;       // 0: directional, 1: positional
 uniform vec3 u_light;           // propagation direction (directional) or position (positional)
 
-float g_tauScale;               // (tau nodes - 1) / log(1 + tau maximum), set in main
+float g_tauScale = 0.0;         // (tau nodes - 1) / log(1 + tau maximum), set in main
 vec3 g_coordinateScale;         // local -> texture coordinate: local * scale + offset
 vec3 g_coordinateOffset;
 
