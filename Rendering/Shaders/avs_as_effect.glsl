@@ -267,17 +267,6 @@ void EffectLeap(int from, int to)
   }
 }
 #endif
-#if defined(AVS_SAMPLE_PAIRS) && defined(AVS_DIFFUSE)
-// A ray that leapt to `pair` read no lights at the pairs before it: dphi/dt of its first pair
-// after the leap takes phi of the pair before (two steps back), as the unleapt ray's does.
-#define AVS_EFFECT_LAND_PAIR
-void EffectLandPair(int pair)
-{
-  float tb = LightT(max(pair - 2, 0));
-  g_phiBefore = textureLod(u_diffuse, (io + tb * id) * g_lightScale + g_lightOffset, 0.0).rgb;
-  g_phiBeforeIndex = pair - 2;
-}
-#endif
 //AVS::Effect::Init
   g_lag = int(floor(u_ambientRadius / dt));
   g_lagFraction = u_ambientRadius / dt - float(g_lag);
@@ -339,14 +328,29 @@ void EffectLandPair(int pair)
 #endif
 //AVS::Effect::Pair
 #ifdef AVS_SAMPLE_PAIRS
+    if (g_pairMaterial)
     {
-      // The lights of the samples pair and pair + 1, read once at their midpoint.
+      // The lights of the samples pair and pair + 1, read once at their midpoint (not for a
+      // pair without material: neither sample would add them).
       float tp = LightT(max(pair, 0));
       g_pairLight = LightSum(io + tp * id, origin + tp * direction, direction);
 #ifdef AVS_DIFFUSE
-      // dphi/dt from the pair before (two steps back; 0 at the ray's first pair).
-      vec3 slope =
-        g_phiBeforeIndex == pair - 2 ? (g_phi - g_phiBefore) / (2.0 * dt) : vec3(0.0);
+      // dphi/dt from the pair before (two steps back; 0 at the unsplit ray's first pair), its
+      // phi read here where that pair had no material or was leapt over.
+      bool before = g_phiBeforeIndex == pair - 2;
+#ifdef AVS_BRICKED
+      bool exists = brickFirst + pair >= 2;
+#else
+      bool exists = pair >= 2;
+#endif
+      if (!before && exists)
+      {
+        float tb = LightT(max(pair - 2, 0));
+        g_phiBefore =
+          textureLod(u_diffuse, (io + tb * id) * g_lightScale + g_lightOffset, 0.0).rgb;
+        before = true;
+      }
+      vec3 slope = before ? (g_phi - g_phiBefore) / (2.0 * dt) : vec3(0.0);
       g_phiBefore = g_phi;
       g_phiBeforeIndex = pair;
       g_pairFluence = ScatteredFluenceOf(g_phi, g_averaged, slope);

@@ -91,6 +91,7 @@ int steps = 0;
 int brickFirst = 0;
 #endif
 vec3 firstCoordinate = vec3(0.0), stepCoordinate = vec3(0.0);
+bool g_pairMaterial = false; // AVS_SAMPLE_PAIRS: whether a sample of the pair has sigma_t > 0
 vec3 L = vec3(0.0);  // radiance so far
 float T = 1.0; // transmittance so far
 
@@ -104,21 +105,39 @@ float Hash(vec2 p)
   return fract(sin(dot(p, vec2(12.9898, 78.233))) * 43758.5453);
 }
 
-// Sample i of the ray: its classification, the effect's light and the transmittance.
-void RaySample(int i)
+// Sample i of the ray: where it lies, its volume texel (`voxel`) and its classification.
+vec4 ClassifySample(int i, out vec4 voxel)
 {
   float t = t0 + (float(i) + offset) * dtWorld;
   vec3 index = io + t * id;
   vec3 coordinate = firstCoordinate + float(i) * stepCoordinate;
-  vec4 voxel = textureLod(AVS_VOLUME_TEXTURE, coordinate, 0.0);
+  voxel = textureLod(AVS_VOLUME_TEXTURE, coordinate, 0.0);
   vec4 here = Classify(voxel, coordinate);
   AVS_CROP(here, index);
+  return here;
+}
+
+// Sample i of the ray, classified (`here`, from its texel `voxel`): the effect's light and the
+// transmittance.
+void RaySampleClassified(int i, vec4 voxel, vec4 here)
+{
+  float t = t0 + (float(i) + offset) * dtWorld;
+  vec3 index = io + t * id;
+  vec3 coordinate = firstCoordinate + float(i) * stepCoordinate;
   float extinction = exp(-here.a * dt);
   //AVS::Effect::Sample
 #ifndef AVS_EFFECT_KEEPS_TRANSMITTANCE
   if (T >= u_termination)
     T *= extinction;
 #endif
+}
+
+// Sample i of the ray: its classification, the effect's light and the transmittance.
+void RaySample(int i)
+{
+  vec4 voxel;
+  vec4 here = ClassifySample(i, voxel);
+  RaySampleClassified(i, voxel, here);
 }
 
 void main()
@@ -210,27 +229,25 @@ void main()
 #ifdef AVS_SKIP
     if (pair >= g_checkFrom)
     {
-      // Over the empty cells to the pair of the first sample that may have material (the
-      // effect's EffectLandPair reads what the pairs leapt over would have left).
+      // Over the empty cells to the pair of the first sample that may have material.
       int j = Leap(pair);
       if (j >= steps)
         break;
-      int landing = j - ((j - firstPair) & 1);
-      if (landing > pair)
-      {
-#ifdef AVS_EFFECT_LAND_PAIR
-        EffectLandPair(landing);
-#endif
-        pair = landing;
-      }
+      pair = max(pair, j - ((j - firstPair) & 1));
     }
 #endif
     if (!EffectContinues(T, max(pair, 0)))
       break;
+    // Both samples classified first: the effect's Pair snippet knows whether the pair has
+    // material (g_pairMaterial). (A brick's first pair of -1 classifies sample 0 twice.)
+    vec4 voxelA, voxelB;
+    vec4 hereA = ClassifySample(max(pair, 0), voxelA);
+    vec4 hereB = ClassifySample(min(pair + 1, steps - 1), voxelB);
+    g_pairMaterial = hereA.a > 0.0 || hereB.a > 0.0;
     //AVS::Effect::Pair
     if (pair >= 0)
     {
-      RaySample(pair);
+      RaySampleClassified(pair, voxelA, hereA);
     }
     if (pair + 1 < steps)
     {
@@ -238,7 +255,7 @@ void main()
       // reads this sample's ring entry)
       if (!EffectContinues(T, pair + 1))
         break;
-      RaySample(pair + 1);
+      RaySampleClassified(pair + 1, voxelB, hereB);
     }
   }
 #else
