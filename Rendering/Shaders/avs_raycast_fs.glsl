@@ -8,12 +8,14 @@
 // texture (AVS_VOLUME_TEXTURE: the scalars, or ambient scattering's texture that holds them
 // beside the averaged extinction) and classifies it (avs_classify.glsl). An effect may define
 // AVS_EFFECT_TERMINATION (then its bool EffectContinues(float T, int i) ends the ray),
-// AVS_SAMPLE_PAIRS (with EffectContinues: the loop takes two samples per iteration, after the
-// effect's per-pair code, which sees the pair's first index `pair`),
+// AVS_SAMPLE_PAIRS (with EffectContinues: the loop takes two samples per iteration, classifies
+// both, then runs the effect's per-pair code, which sees the pair's first index `pair` and
+// whether one of its samples has extinction, g_pairMaterial),
 // AVS_EFFECT_KEEPS_TRANSMITTANCE (then it updates T itself, as the blend modes other than
-// composite do) and AVS_EFFECT_OUTPUT (then vec4 EffectOutput(vec3 L, float T) gives the
-// premultiplied pixel). The CPU reference (Rendering/Core/ReferenceRenderer.cxx) computes the
-// same sums in double precision.
+// composite do), AVS_EFFECT_OUTPUT (then vec4 EffectOutput(vec3 L, float T) gives the
+// premultiplied pixel) and AVS_EFFECT_LEAP (then void EffectLeap(int from, int to) learns of
+// the empty samples [from, to) that empty-space skipping leapt over: avs_skip.glsl). The CPU
+// reference (Rendering/Core/ReferenceRenderer.cxx) computes the same sums in double precision.
 //
 // Distances: t runs along the world ray (positions, depth); the integration step dt is in data
 // units, the vtkVolume's coordinates before its matrix (u_spacing turns an index step into
