@@ -51,6 +51,24 @@ struct Case
   double MostEmpty = 0.25;                            ///< at least this share of the cells is empty
 };
 
+// A mask's labels at (x, y, z) in [-1, 1]^3: 1 where x < -0.2, 2 where y > 0.3, else 0.
+std::array<double, 4> Labels(double x, double y, double)
+{
+  return { x < -0.2 ? 1.0 : (y > 0.3 ? 2.0 : 0.0), 0, 0, 0 };
+}
+
+// Two components: the shell and the slab.
+std::array<double, 4> ShellAndSlab(double x, double y, double z)
+{
+  return { ShellValue(x, y, z)[0], SlabValue(x, y, z)[0], 0, 0 };
+}
+
+// The shell with NaN voxels in a band through it.
+std::array<double, 4> ShellWithNaN(double x, double y, double z)
+{
+  return { std::abs(x + y) < 0.1 ? std::nan("") : ShellValue(x, y, z)[0], 0, 0, 0 };
+}
+
 vtkSmartPointer<vtkImageData> Shell()
 {
   auto image = MakeTestImage(N);
@@ -93,15 +111,9 @@ int main()
       m->SetCroppingRegionFlagsToFence();
     } });
   {
-    // A mask of the volume's points: label 1 where x < -0.2, 2 where y > 0.3, else 0.
+    // A mask of the volume's points (Labels).
     auto mask = MakeTestImage(N);
-    vtkFloatArray* labels = AddArray(mask,
-      "labels",
-      1,
-      false,
-      [](double x, double y, double) -> std::array<double, 4> {
-        return { x < -0.2 ? 1.0 : (y > 0.3 ? 2.0 : 0.0), 0, 0, 0 };
-      });
+    vtkFloatArray* labels = AddArray(mask, "labels", 1, false, Labels);
     vtkNew<vtkUnsignedCharArray> bytes;
     bytes->SetNumberOfTuples(labels->GetNumberOfTuples());
     for (vtkIdType i = 0; i < bytes->GetNumberOfTuples(); ++i)
@@ -140,13 +152,7 @@ int main()
   }
   {
     auto image = MakeTestImage(N);
-    image->GetPointData()->SetScalars(AddArray(image,
-      "two",
-      2,
-      false,
-      [](double x, double y, double z) -> std::array<double, 4> {
-        return { ShellValue(x, y, z)[0], SlabValue(x, y, z)[0], 0, 0 };
-      }));
+    image->GetPointData()->SetScalars(AddArray(image, "two", 2, false, ShellAndSlab));
     auto independent = Property();
     independent->IndependentComponentsOn();
     independent->SetColor(1, independent->GetRGBTransferFunction(0));
@@ -158,15 +164,8 @@ int main()
     cases.push_back({ "dependent components", image, dependent, nullptr, true, 0.1 });
   }
   {
-    // NaN voxels in a band through the shell.
     auto image = MakeTestImage(N);
-    image->GetPointData()->SetScalars(AddArray(image,
-      "nan",
-      1,
-      false,
-      [](double x, double y, double z) -> std::array<double, 4> {
-        return { std::abs(x + y) < 0.1 ? std::nan("") : ShellValue(x, y, z)[0], 0, 0, 0 };
-      }));
+    image->GetPointData()->SetScalars(AddArray(image, "nan", 1, false, ShellWithNaN));
     cases.push_back({ "NaN voxels", image, Property(), nullptr });
   }
   {
