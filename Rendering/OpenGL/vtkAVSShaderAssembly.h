@@ -25,6 +25,9 @@
 class vtkAVSShaderAssembly
 {
 public:
+  /// Ambient scattering's ring buffer of the look-ahead (entries), 0 where the radius needs
+  /// more than vtkAVSRayCaster::MaximumRingSize (the explicit look-ahead).
+  static int RingSize(const avs::ScatteringParameters& parameters);
   /// Compile-time choices of the ray-casting program for a frame (see avs_lights.glsl and the
   /// effect files): the classification's, the number of lights and which are positional or
   /// spots, AO's direct light, and for ambient scattering the ring buffer's size (or the explicit
@@ -34,9 +37,6 @@ public:
   /// it, vtkAVSVolumeTextures::AveragedSlot, or -1 for its own texture), and whether the lights
   /// are read once per pair of samples (`lightsPerPair`, avs::ScatteringParameters::LightsPerPair).
   /// One program per combination.
-  /// Ambient scattering's ring buffer of the look-ahead (entries), 0 where the radius needs
-  /// more than vtkAVSRayCaster::MaximumRingSize (the explicit look-ahead).
-  static int RingSize(const avs::ScatteringParameters& parameters);
   static std::string RayCastDefines(avs::RenderMode mode,
     const avs::ScatteringParameters& parameters,
     const std::vector<avs::Light>& lights,
