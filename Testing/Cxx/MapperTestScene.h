@@ -20,6 +20,7 @@
 #include "vtkVolumeProperty.h"
 #include "vtkWindowToImageFilter.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -153,6 +154,23 @@ inline double Psnr(vtkImageData* a, vtkImageData* b)
     }
   const double mse = se / (3.0 * n);
   return mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : std::numeric_limits<double>::infinity();
+}
+
+/// Largest difference of one channel between two RGB pictures, in levels of 255 (256 when their
+/// sizes differ).
+inline int MaximumDifference(vtkImageData* a, vtkImageData* b)
+{
+  vtkDataArray* x = a->GetPointData()->GetScalars();
+  vtkDataArray* y = b->GetPointData()->GetScalars();
+  if (!x || !y || x->GetNumberOfTuples() != y->GetNumberOfTuples())
+  {
+    return 256;
+  }
+  double most = 0.0;
+  for (vtkIdType i = 0; i < x->GetNumberOfTuples(); ++i)
+    for (int c = 0; c < 3; ++c)
+      most = std::max(most, std::abs(x->GetComponent(i, c) - y->GetComponent(i, c)));
+  return static_cast<int>(most);
 }
 
 /// Sum of the RGB values (to tell a picture from a blank one).

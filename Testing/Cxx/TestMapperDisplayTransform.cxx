@@ -57,16 +57,6 @@ struct Scene
   }
 };
 
-int MaximumDifference(vtkImageData* a, vtkImageData* b)
-{
-  vtkDataArray* x = a->GetPointData()->GetScalars();
-  vtkDataArray* y = b->GetPointData()->GetScalars();
-  double most = 0.0;
-  for (vtkIdType i = 0; i < x->GetNumberOfTuples(); ++i)
-    for (int c = 0; c < 3; ++c)
-      most = std::max(most, std::abs(x->GetComponent(i, c) - y->GetComponent(i, c)));
-  return static_cast<int>(most);
-}
 } // namespace
 
 int main(int, char*[])

@@ -81,22 +81,6 @@ void AddLightKit(vtkRenderer* renderer)
   kit->AddLightsToRenderer(renderer);
 }
 
-/// Largest difference of one channel between two RGB pictures of the same size.
-int MaximumDifference(vtkImageData* a, vtkImageData* b)
-{
-  vtkDataArray* x = a->GetPointData()->GetScalars();
-  vtkDataArray* y = b->GetPointData()->GetScalars();
-  if (x->GetNumberOfTuples() != y->GetNumberOfTuples())
-  {
-    return 256;
-  }
-  double most = 0.0;
-  for (vtkIdType i = 0; i < x->GetNumberOfTuples(); ++i)
-    for (int c = 0; c < 3; ++c)
-      most = std::max(most, std::abs(x->GetComponent(i, c) - y->GetComponent(i, c)));
-  return static_cast<int>(most);
-}
-
 double Channel(vtkImageData* image, int x, int y, int c)
 {
   return image->GetPointData()->GetScalars()->GetComponent(
