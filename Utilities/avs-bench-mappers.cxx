@@ -5,7 +5,7 @@
 //   ratio <name> <value>
 //
 // Scene: the built-in nebula (default 256^3) or, with --embryo FILE, the real embryo scan (VTK's
-// embryo.slc, 256^3 unsigned 8-bit, 87 % of it empty), placed in the nebula's box with the
+// embryo.slc, 256^3 unsigned 8-bit, most of it empty), placed in the nebula's box with the
 // nebula's transfer functions over its own range, 512 x 512 pixels, the same sample distance
 // (half a voxel) and transfer functions for every mapper, jittering off. The embryo's lines
 // carry the suffix _embryo. Each mapper renders a warm-up frame (which
@@ -18,15 +18,15 @@
 // after a transfer-function change and after a light move, for both models in alternation: the
 // frame after the change less the next frame, the median over five changes of each kind.
 //
-// Then interaction, as vtkRenderWindowInteractor drives it (its style sets the render window's
-// desired update rate to the interactor's DesiredUpdateRate, 15, while a button is down, and to
-// its StillUpdateRate, 0.0001, at the release): a still frame, 10 frames turning 3 degrees at
-// rate 15, and the still frame after them, for VTK's mapper shaded with its own adjustment
-// (AutoAdjustSampleDistances on) and ours (AutoAdjustSampleDistances on; ambient scattering also
-// with MaximumImageSampleDistance 4, "as_max4", and with the light kit also without adjustment,
-// "as_fixed", every frame exact as before the adjustment existed), with a headlight and with a
-// light kit (five lights that follow the camera). Reported: the median interactive frame, the
-// still frame after the interaction, the image sample distance ours settled on (VTK's reduction
+// Then interaction (BenchInteraction.h), as vtkRenderWindowInteractor drives it (its style sets the
+// render window's desired update rate to the interactor's DesiredUpdateRate, 15, while a button is
+// down, and to its StillUpdateRate, 0.0001, at the release): a still frame, 10 frames turning 3
+// degrees at rate 15, and the still frame after them, for VTK's mapper shaded with its own
+// adjustment (AutoAdjustSampleDistances on) and ours (AutoAdjustSampleDistances on; ambient
+// scattering also with MaximumImageSampleDistance 4, "as_max4", and with the light kit also without
+// adjustment, "as_fixed", every frame exact as before the adjustment existed), with a headlight and
+// with a light kit (five lights that follow the camera). Reported: the median interactive frame,
+// the still frame after the interaction, the image sample distance ours settled on (VTK's reduction
 // factor of its ray step), and the light-volume rebuilds during and after it (checked: none
 // while interacting, the stale ones at the still frame). --interaction-only runs this part alone.
 //
@@ -37,7 +37,9 @@
 // ambient-scattering models alone (as4 and asx4: frames, rebuilds and their ratios).
 // --no-skipping turns our mappers' empty-space skipping off (what it buys: a run with it
 // against one without).
+#include "BenchInteraction.h"
 #include "BenchScene.h"
+#include "MapperBench.h"
 #include "ProceduralVolume.h"
 
 #include "vtkAmbientOcclusionVolumeMapper.h"
@@ -69,304 +71,11 @@
 #include <string>
 #include <vector>
 
-namespace
-{
-/// Our mappers' EmptySpaceSkipping (--no-skipping turns it off, to measure what it buys).
-bool SkipEmptySpace = true;
-
-double Median(std::vector<double> values)
-{
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
-
-double Seconds(const std::chrono::steady_clock::time_point& start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-/// A value vtkObject::Print writes after `label` (0 when absent).
-double PrintedValue(vtkObject* object, const std::string& label)
-{
-  std::ostringstream os;
-  object->Print(os);
-  const std::string text = os.str();
-  const std::size_t at = text.find(label);
-  return at == std::string::npos ? 0.0 : std::atof(text.c_str() + at + label.size());
-}
-
-struct Bench
-{
-  vtkNew<vtkRenderWindow> Window;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkVolumeProperty> Property;
-  vtkNew<vtkPiecewiseFunction> Opacity;
-  vtkNew<vtkImageData> Volume;
-  std::vector<vtkSmartPointer<vtkLight>> Lights;
-  int Frames = 10;
-
-  double Frame()
-  {
-    const auto start = std::chrono::steady_clock::now();
-    this->Window->Render();
-    this->Window->WaitForCompletion();
-    return Seconds(start);
-  }
-
-  void SetLights(int count)
-  {
-    this->Renderer->RemoveAllLights();
-    for (int i = 0; i < count && i < static_cast<int>(this->Lights.size()); ++i)
-    {
-      this->Renderer->AddLight(this->Lights[i]);
-    }
-  }
-
-  /// Volumes of `mappers` with the bench's property, in the renderer.
-  std::vector<vtkSmartPointer<vtkVolume>> AddVolumes(const std::vector<vtkVolumeMapper*>& mappers)
-  {
-    std::vector<vtkSmartPointer<vtkVolume>> volumes;
-    for (vtkVolumeMapper* mapper : mappers)
-    {
-      volumes.push_back(vtkSmartPointer<vtkVolume>::New());
-      volumes.back()->SetMapper(mapper);
-      volumes.back()->SetProperty(this->Property);
-      this->Renderer->AddVolume(volumes.back());
-    }
-    return volumes;
-  }
-  void RemoveVolumes(const std::vector<vtkSmartPointer<vtkVolume>>& volumes)
-  {
-    for (vtkVolume* volume : volumes)
-    {
-      this->Renderer->RemoveVolume(volume);
-    }
-  }
-  /// The frame time with volumes[shown] alone visible.
-  double FrameOf(const std::vector<vtkSmartPointer<vtkVolume>>& volumes, std::size_t shown)
-  {
-    for (std::size_t v = 0; v < volumes.size(); ++v)
-    {
-      volumes[v]->SetVisibility(v == shown);
-    }
-    return this->Frame();
-  }
-
-  /// Each mapper's warm-up frame time, then the median over Frames frames with a moving camera
-  /// (and the frames themselves). With several mappers their frames alternate at each camera
-  /// position, so that a machine whose speed drifts slows all alike.
-  struct Timing
-  {
-    double First = 0.0, Median = 0.0;
-    std::vector<double> Frames;
-  };
-  std::vector<Timing> MeasureEach(const std::vector<vtkVolumeMapper*>& mappers)
-  {
-    const auto volumes = this->AddVolumes(mappers);
-    vtkCamera* camera = this->Renderer->GetActiveCamera();
-    camera->SetPosition(0.5, 0.7, 4.2);
-    camera->SetFocalPoint(0, 0, 0);
-    camera->SetViewUp(0, 1, 0);
-    this->Renderer->ResetCameraClippingRange();
-    std::vector<Timing> timings(mappers.size());
-    for (std::size_t m = 0; m < mappers.size(); ++m)
-    {
-      timings[m].First = this->FrameOf(volumes, m);
-    }
-    for (int f = 0; f < this->Frames; ++f)
-    {
-      camera->Azimuth(3.0);
-      this->Renderer->ResetCameraClippingRange();
-      for (std::size_t m = 0; m < mappers.size(); ++m)
-      {
-        timings[m].Frames.push_back(this->FrameOf(volumes, m));
-      }
-    }
-    this->RemoveVolumes(volumes);
-    for (Timing& t : timings)
-    {
-      t.Median = Median(t.Frames);
-    }
-    return timings;
-  }
-
-  /// The median over the camera positions of b's frame over a's (MeasureEach's frames at the
-  /// same positions).
-  static double RatioOf(const Timing& a, const Timing& b)
-  {
-    std::vector<double> ratios;
-    for (std::size_t f = 0; f < a.Frames.size() && f < b.Frames.size(); ++f)
-    {
-      ratios.push_back(b.Frames[f] / a.Frames[f]);
-    }
-    return ratios.empty() ? 0.0 : Median(ratios);
-  }
-
-  struct Interaction
-  {
-    double Interactive = 0.0; ///< median interactive frame
-    double Still = 0.0;       ///< the still frame after the interaction
-    /// Ours: the last interactive image sample distance; VTK's: the last interactive reduction
-    /// factor of its ray step (its PrintSelf's ReductionFactor; the step is divided by it).
-    double Distance = 1.0;
-    int RebuildsInteracting = 0, RebuildsAtStill = 0; ///< ours: light-volume rebuilds
-  };
-
-  /// A still frame, Frames interactive frames at desired update rate 15 with a moving camera,
-  /// and the still frame after them.
-  Interaction Interact(vtkVolumeMapper* mapper, vtkVolumeProperty* property)
-  {
-    constexpr double interactiveRate = 15.0, stillRate = 0.0001; // the interactor's defaults
-    auto* ours = vtkAVSVolumeMapper::SafeDownCast(mapper);
-    vtkNew<vtkVolume> volume;
-    volume->SetMapper(mapper);
-    volume->SetProperty(property);
-    this->Renderer->AddVolume(volume);
-    vtkCamera* camera = this->Renderer->GetActiveCamera();
-    camera->SetPosition(0.5, 0.7, 4.2);
-    camera->SetFocalPoint(0, 0, 0);
-    camera->SetViewUp(0, 1, 0);
-    this->Renderer->ResetCameraClippingRange();
-    this->Window->SetDesiredUpdateRate(stillRate);
-    this->Frame();
-    const int before = ours ? ours->GetNumberOfLightVolumeRebuilds() : 0;
-    this->Window->SetDesiredUpdateRate(interactiveRate);
-    std::vector<double> times;
-    for (int f = 0; f < this->Frames; ++f)
-    {
-      camera->Azimuth(3.0);
-      this->Renderer->ResetCameraClippingRange();
-      times.push_back(this->Frame());
-    }
-    Interaction out;
-    out.Interactive = Median(times);
-    out.Distance =
-      ours ? ours->GetLastImageSampleDistance() : PrintedValue(mapper, "ReductionFactor: ");
-    const int interacting = ours ? ours->GetNumberOfLightVolumeRebuilds() : 0;
-    this->Window->SetDesiredUpdateRate(stillRate);
-    out.Still = this->Frame();
-    out.RebuildsInteracting = interacting - before;
-    out.RebuildsAtStill = (ours ? ours->GetNumberOfLightVolumeRebuilds() : 0) - interacting;
-    this->Renderer->RemoveVolume(volume);
-    return out;
-  }
-
-  void SetHeadlight()
-  {
-    this->Renderer->RemoveAllLights();
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToHeadlight();
-    light->SetIntensity(5.0);
-    this->Renderer->AddLight(light);
-  }
-
-  void SetLightKit()
-  {
-    this->Renderer->RemoveAllLights();
-    vtkNew<vtkLightKit> kit;
-    kit->SetKeyLightIntensity(5.0);
-    kit->AddLightsToRenderer(this->Renderer);
-  }
-};
-
-/// The interaction scenario (see the top of the file); false when the light-volume rebuilds
-/// were not the expected ones (none while interacting, the stale ones at the still frame).
-bool RunInteraction(Bench& b, int lightGrid, const std::string& scene)
-{
-  vtkNew<vtkVolumeProperty> shaded;
-  shaded->DeepCopy(b.Property);
-  shaded->ShadeOn();
-  std::printf("# interaction: desired update rate 15 (one renderer, one volume: %.4f s allotted), "
-              "%d frames turning 3 degrees, then a still frame; VTK's mapper shaded; "
-              "AutoAdjustSampleDistances on for all\n",
-    1.0 / 15.0,
-    b.Frames);
-  bool ok = true;
-  for (const std::string lights : { "headlight", "lightkit" })
-  {
-    const std::string suffix = "_" + lights + scene;
-    if (lights == "headlight")
-    {
-      b.SetHeadlight();
-    }
-    else
-    {
-      b.SetLightKit();
-    }
-    vtkNew<vtkGPUVolumeRayCastMapper> vtkShaded;
-    vtkShaded->SetInputData(b.Volume);
-    vtkShaded->SetUseJittering(0);
-    const auto v = b.Interact(vtkShaded, shaded);
-    std::printf("bench interactive_frame_vtk_shaded%s %.4f s\n", suffix.c_str(), v.Interactive);
-    std::printf("bench still_frame_vtk_shaded%s %.4f s\n", suffix.c_str(), v.Still);
-    std::printf("bench reduction_factor_vtk_shaded%s %.2f\n", suffix.c_str(), v.Distance);
-
-    std::vector<std::pair<std::string, vtkSmartPointer<vtkAVSVolumeMapper>>> ours;
-    if (lights == "headlight") // EA and AO do not use the lights
-    {
-      ours.emplace_back("ea", vtkSmartPointer<vtkEmissionAbsorptionVolumeMapper>::New());
-      ours.emplace_back("ao", vtkSmartPointer<vtkAmbientOcclusionVolumeMapper>::New());
-    }
-    // Ambient scattering at VTK's default range of image sample distances, at most 4, and (with
-    // the light kit) without adjustment: every frame exact, every camera light rebuilt.
-    for (const float most : { 10.0f, 4.0f, 0.0f })
-    {
-      if (most == 0.0f && lights == "headlight")
-      {
-        continue;
-      }
-      auto as = vtkSmartPointer<vtkAmbientScatteringVolumeMapper>::New();
-      if (lightGrid > 0)
-      {
-        as->SetLightVolumeMaximumDimension(lightGrid);
-      }
-      if (most > 0.0f)
-      {
-        as->SetMaximumImageSampleDistance(most);
-      }
-      else
-      {
-        as->AutoAdjustSampleDistancesOff();
-      }
-      ours.emplace_back(most == 10.0f ? "as" : (most == 4.0f ? "as_max4" : "as_fixed"), as);
-    }
-    for (auto& [name, mapper] : ours)
-    {
-      mapper->SetInputData(b.Volume);
-      mapper->SetSampleDistance(0.5 * b.Volume->GetSpacing()[0]);
-      mapper->UseJitteringOff();
-      mapper->SetEmptySpaceSkipping(SkipEmptySpace);
-      const auto o = b.Interact(mapper, b.Property);
-      const bool scattering = name.rfind("as", 0) == 0;
-      const std::string label = name + (scattering ? suffix : scene);
-      std::printf("bench interactive_frame_%s %.4f s\n", label.c_str(), o.Interactive);
-      std::printf("bench still_frame_%s %.4f s\n", label.c_str(), o.Still);
-      std::printf("bench image_sample_distance_%s %.1f\n", label.c_str(), o.Distance);
-      if (scattering)
-      {
-        const bool fixed = name == "as_fixed";
-        const int expected = lights == "headlight" ? 1 : (fixed ? 0 : 5);
-        std::printf(
-          "bench light_volume_rebuilds_interactive_%s %d\n", label.c_str(), o.RebuildsInteracting);
-        std::printf("bench light_volume_rebuilds_still_%s %d\n", label.c_str(), o.RebuildsAtStill);
-        ok = ok && o.RebuildsInteracting == (fixed ? 5 * b.Frames : 0) &&
-          o.RebuildsAtStill == expected;
-        std::printf("ratio interactive_%s_over_vtk_shaded%s %.3f\n",
-          label.c_str(),
-          suffix.c_str(),
-          o.Interactive / v.Interactive);
-      }
-    }
-  }
-  return ok;
-}
-} // namespace
-
 int main(int argc, char* argv[])
 {
   int voxels = 256, size = 512, frames = 10, lightGrid = 0;
-  bool interactionOnly = false, clipping = false, clipNothing = false, modelsOnly = false,
-       framesOnly = false;
+  bool skipEmptySpace = true, interactionOnly = false, clipping = false, clipNothing = false,
+       modelsOnly = false, framesOnly = false;
   std::string writeScene, embryo;
   for (int i = 1; i < argc; ++i)
   {
@@ -414,7 +123,7 @@ int main(int argc, char* argv[])
     }
     if (arg == "--no-skipping")
     {
-      SkipEmptySpace = false;
+      skipEmptySpace = false;
       continue;
     }
     if (arg == "--frames-only")
@@ -450,6 +159,7 @@ int main(int argc, char* argv[])
 
   Bench b;
   b.Frames = frames;
+  b.SkipEmptySpace = skipEmptySpace;
   std::string scene = "nebula";
   double top = 1.0; // the transfer functions' scalar range is [0, top]
   if (!embryo.empty())
@@ -531,7 +241,7 @@ int main(int argc, char* argv[])
     lightGrid > 0
       ? lightGrid
       : vtkSmartPointer<vtkAmbientScatteringVolumeMapper>::New()->GetLightVolumeMaximumDimension(),
-    SkipEmptySpace ? "on" : "off");
+    b.SkipEmptySpace ? "on" : "off");
 
   if (interactionOnly)
   {
@@ -575,7 +285,7 @@ int main(int argc, char* argv[])
     m->SetInputData(b.Volume);
     m->SetSampleDistance(sampleDistance);
     m->UseJitteringOff();
-    m->SetEmptySpaceSkipping(SkipEmptySpace);
+    m->SetEmptySpaceSkipping(b.SkipEmptySpace);
   }
   if (clipping)
   {
