@@ -36,9 +36,11 @@
 // without says what the clipping tests cost per frame. --scattering-models-only measures the two
 // ambient-scattering models alone (as4 and asx4: frames, rebuilds and their ratios).
 // --no-skipping turns our mappers' empty-space skipping off (what it buys: a run with it
-// against one without).
+// against one without). --time-series plays the volume as a simulation of --steps steps instead
+// (BenchTimeSeries.h).
 #include "BenchInteraction.h"
 #include "BenchScene.h"
+#include "BenchTimeSeries.h"
 #include "MapperBench.h"
 #include "ProceduralVolume.h"
 
@@ -73,9 +75,9 @@
 
 int main(int argc, char* argv[])
 {
-  int voxels = 256, size = 512, frames = 10, lightGrid = 0;
-  bool skipEmptySpace = true, interactionOnly = false, clipping = false, clipNothing = false,
-       modelsOnly = false, framesOnly = false;
+  int voxels = 256, size = 512, frames = 10, lightGrid = 0, steps = 20;
+  bool skipEmptySpace = true, timeSeries = false, interactionOnly = false, clipping = false,
+       clipNothing = false, modelsOnly = false, framesOnly = false;
   std::string writeScene, embryo;
   for (int i = 1; i < argc; ++i)
   {
@@ -86,7 +88,8 @@ int main(int argc, char* argv[])
         "Usage: avs-bench-mappers [--voxels N] [--size N] [--frames N] [--light-grid N] "
         "[--interaction-only | --scattering-models-only] [--frames-only] "
         "[--clipping | --clipping-nothing] "
-        "[--write-scene FILE.vti] [--embryo FILE.slc] [--no-skipping]\n\n"
+        "[--write-scene FILE.vti] [--embryo FILE.slc] [--no-skipping] "
+        "[--time-series [--steps N]]\n\n"
         "Median frame times of VTK's vtkGPUVolumeRayCastMapper and of the module's "
         "mappers on the built-in nebula\n(N^3 voxels, default 256), N x N pixels "
         "(default 512), over N frames (default 10), and their ratios;\nthen interactive "
@@ -103,7 +106,9 @@ int main(int argc, char* argv[])
         "Utilities/ParaView) and stop.\n"
         "--embryo FILE.slc: the embryo scan (VTK's embryo.slc) in place of the nebula; its "
         "lines end in _embryo.\n"
-        "--no-skipping: our mappers march through empty space (EmptySpaceSkipping off).\n");
+        "--no-skipping: our mappers march through empty space (EmptySpaceSkipping off).\n"
+        "--time-series: N steps (default 20) of the volume moving, camera still, each from the "
+        "new data to the finished frame (BenchTimeSeries.h), and stop.\n");
       return 0;
     }
     if (arg == "--write-scene" && i + 1 < argc)
@@ -119,6 +124,11 @@ int main(int argc, char* argv[])
     if (arg == "--interaction-only")
     {
       interactionOnly = true;
+      continue;
+    }
+    if (arg == "--time-series")
+    {
+      timeSeries = true;
       continue;
     }
     if (arg == "--no-skipping")
@@ -143,7 +153,8 @@ int main(int argc, char* argv[])
       continue;
     }
     if (i + 1 < argc &&
-      (arg == "--voxels" || arg == "--size" || arg == "--frames" || arg == "--light-grid"))
+      (arg == "--voxels" || arg == "--size" || arg == "--frames" || arg == "--light-grid" ||
+        arg == "--steps"))
     {
       const int v = std::max(2, std::atoi(argv[++i]));
       if (arg == "--voxels")
@@ -152,6 +163,8 @@ int main(int argc, char* argv[])
         size = v;
       else if (arg == "--frames")
         frames = v;
+      else if (arg == "--steps")
+        steps = v;
       else
         lightGrid = v;
     }
@@ -243,6 +256,15 @@ int main(int argc, char* argv[])
       : vtkSmartPointer<vtkAmbientScatteringVolumeMapper>::New()->GetLightVolumeMaximumDimension(),
     b.SkipEmptySpace ? "on" : "off");
 
+  if (timeSeries)
+  {
+    if (!RunTimeSeries(b, steps, suffix))
+    {
+      std::fprintf(stderr, "avs-bench-mappers: a mapper did not upload every step's data\n");
+      return 1;
+    }
+    return 0;
+  }
   if (interactionOnly)
   {
     if (!RunInteraction(b, lightGrid, suffix))
