@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <utility>
 
 void vtkAVSVolumeTextures::SetWindow(vtkOpenGLRenderWindow* window)
 {
@@ -310,6 +311,7 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
       }
     },
     scene.Medium.Validity.Values);
+  ++this->ValueRangesVersion;
   std::array<int, 3> ghost;
   for (int a = 0; a < 3; ++a)
   {
@@ -459,6 +461,12 @@ bool vtkAVSVolumeTextures::UploadOccupancy(const avs::VolumeScene& scene, std::s
   {
     return true; // no scalars yet: UploadScalars comes back here
   }
+  std::vector<double> key = avs::ExtinctionKey(scene);
+  if (this->Occupancy && this->OccupancyRangesVersion == this->ValueRangesVersion &&
+    this->OccupancyKey == key)
+  {
+    return true; // built from the same ranges and opacity
+  }
   std::vector<unsigned char> occupied = avs::Occupancy(this->ValueRanges, avs::Classifier(scene));
   this->EmptyCellFraction = avs::EmptyFraction(occupied);
   for (unsigned char& o : occupied)
@@ -485,6 +493,8 @@ bool vtkAVSVolumeTextures::UploadOccupancy(const avs::VolumeScene& scene, std::s
     return false;
   }
   SetVolumeFilter(this->Occupancy, true); // one texel per cell (read with texelFetch)
+  this->OccupancyRangesVersion = this->ValueRangesVersion;
+  this->OccupancyKey = std::move(key);
   this->NotePeak();
   return true;
 }

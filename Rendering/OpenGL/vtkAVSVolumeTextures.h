@@ -105,7 +105,7 @@ public:
   bool UploadClassification(const avs::VolumeScene& scene, std::string& error);
   /// The occupancy of the scene's cells (avs::Occupancy) for its transfer functions, from the
   /// value ranges UploadScalars took, as an 8-bit texture (Occupancy); done by UploadScalars
-  /// and UploadClassification.
+  /// and UploadClassification, each time the ranges or the opacity changed.
   bool UploadOccupancy(const avs::VolumeScene& scene, std::string& error);
   bool UploadAveraged(const avs::Grid& averaged, std::string& error);
   bool UploadLightVolumes(const std::vector<avs::Grid>& lights, std::string& error);
@@ -143,6 +143,11 @@ public:
   avs::ValueRangeGrid ValueRanges;
   vtkSmartPointer<vtkTextureObject> Occupancy;
   double EmptyCellFraction = 0.0;
+  /// What Occupancy was built from: the ranges (counted at each UploadScalars) and the opacity
+  /// (avs::ExtinctionKey), so that a colour change or a second call rebuilds nothing.
+  int ValueRangesVersion = 0;
+  int OccupancyRangesVersion = -1;
+  std::vector<double> OccupancyKey;
   /// The bricks of a split volume (vtkAVSBricks; one unsplit brick otherwise) and, when split,
   /// their scalar textures (in the order of Bricks.GetBricks()).
   vtkAVSBricks Bricks;

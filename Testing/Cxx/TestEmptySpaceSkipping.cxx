@@ -8,8 +8,9 @@
 // ones, NaN voxels, gradient opacity, split into bricks, jittered, at image sample distance 2,
 // and a transfer function whose opacity is a narrow band. The blend modes other than composite
 // and ambient scattering's explicit look-ahead (a radius beyond the ring) do not leap, and say
-// so. (Against the CPU reference the pictures are compared, with skipping on, by
-// TestMappersAgainstReference, TestMasks, TestComponents, TestBricking and the others.)
+// so. One mapper kept through a transfer-function change and new data draws what a mapper
+// without skipping draws. (Against the CPU reference the pictures are compared, with skipping on,
+// by TestMappersAgainstReference, TestMasks, TestComponents, TestBricking and the others.)
 #include "DataTestScene.h"
 
 #include "vtkAmbientOcclusionVolumeMapper.h"
@@ -266,6 +267,67 @@ int main()
       if (!(Brightness(pictures[0]) > 0.0))
       {
         std::cerr << "FAIL: " << what << ": nothing drawn\n";
+        ++failures;
+      }
+    }
+  }
+  {
+    // The grid follows the mapper's input: the same mapper, after a transfer function that
+    // gives opacity where the last one had none and after new data, draws what a mapper without
+    // skipping draws.
+    auto band = Property();
+    vtkNew<vtkPiecewiseFunction> low;
+    low->AddPoint(0, 0.03); // a haze where the last function left empty space
+    low->AddPoint(100, 0.2);
+    low->AddPoint(900, 0.5);
+    auto moved = MakeTestImage(N);
+    moved->GetPointData()->SetScalars(AddArray(moved, "slab", 1, false, SlabValue));
+    for (int m = 0; m < 2; ++m)
+    {
+      vtkSmartPointer<vtkAVSVolumeMapper> live, fresh;
+      if (m == 0)
+      {
+        live = vtkSmartPointer<vtkEmissionAbsorptionVolumeMapper>::New();
+        fresh = vtkSmartPointer<vtkEmissionAbsorptionVolumeMapper>::New();
+      }
+      else
+      {
+        live = vtkSmartPointer<vtkAmbientScatteringVolumeMapper>::New();
+        fresh = vtkSmartPointer<vtkAmbientScatteringVolumeMapper>::New();
+      }
+      for (vtkAVSVolumeMapper* mapper : { live.Get(), fresh.Get() })
+      {
+        mapper->SetSampleDistance(0.025);
+        mapper->UseJitteringOff();
+      }
+      fresh->EmptySpaceSkippingOff();
+      auto property = Property();
+      live->SetInputData(cases[0].Data);
+      vtkNew<vtkVolume> volume;
+      volume->SetMapper(live);
+      volume->SetProperty(property);
+      renderer->AddVolume(volume);
+      window->Render(); // the grid of the first transfer function
+      const double before = live->GetLastEmptyCellFraction();
+      property->GetScalarOpacity()->DeepCopy(low);
+      renderer->ResetCameraClippingRange();
+      window->Render();
+      auto changed = Grab(window);
+      const double after = live->GetLastEmptyCellFraction();
+      live->SetInputData(moved);
+      window->Render();
+      auto data = Grab(window);
+      renderer->RemoveVolume(volume);
+      fresh->SetInputData(cases[0].Data);
+      const int tf = MaximumDifference(changed, RenderVolume(window, renderer, fresh, property));
+      fresh->SetInputData(moved);
+      const int input = MaximumDifference(data, RenderVolume(window, renderer, fresh, property));
+      std::cout << (m == 0 ? "EA" : "AS") << " after a transfer-function change: " << tf
+                << " levels (" << before * 100.0 << " % then " << after * 100.0
+                << " % of the cells empty); after new data: " << input << " levels\n";
+      if (tf > 1 || input > 1 || !(after < before))
+      {
+        std::cerr << "FAIL: the grid did not follow a transfer-function change or new data\n";
         ++failures;
       }
     }
