@@ -75,6 +75,7 @@ void vtkAVSVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
       in.DiffuseUploaded = false;
     in.SliceTable = nullptr;
     in.AveragedRadius = -1.0;
+    in.ForgetUploadedContent();
   }
 }
 
@@ -261,6 +262,11 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     in.ScalarsUploaded = true;
     in.UploadedPartitions = partitions;
     in.UploadedLookBack = lookBack;
+    in.UploadedFingerprints = in.Fingerprints;
+    in.UploadedContentKey = in.ContentKey;
+    in.UploadedRangeDependent = in.RangeDependent();
+    this->LastDataUploadFraction = in.RayCaster.GetUploadedVoxels() /
+      std::max(1.0, static_cast<double>(in.Scene.Scalars.Geometry.NumberOfPoints()));
     ++this->NumberOfDataUploads;
     if (wasBricked || in.RayCaster.IsBricked())
     {
@@ -372,6 +378,7 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   {
     // Another window: its context gets its own resources.
     this->ReleaseGraphicsResources(in.RayCaster.GetWindow());
+    in.ForgetUploadedContent();
     in.RayCaster.SetWindow(window);
     in.ScalarsUploaded = in.TransferUploaded = in.LightVolumesUploaded = in.OcclusionUploaded =
       false;
@@ -573,6 +580,7 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OcclusionOnGPU: " << (this->OcclusionOnGPU ? "yes" : "no") << "\n";
   os << indent << "EmptySpaceSkipping: " << (this->EmptySpaceSkipping ? "On" : "Off") << "\n";
   os << indent << "LastEmptyCellFraction: " << this->LastEmptyCellFraction << "\n";
+  os << indent << "LastDataUploadFraction: " << this->LastDataUploadFraction << "\n";
   os << indent << "LastSkippedEmptySpace: " << (this->LastSkippedEmptySpace ? "yes" : "no") << "\n";
   os << indent << "WholeExtent: (" << this->WholeExtent[0] << ", " << this->WholeExtent[1] << ", "
      << this->WholeExtent[2] << ", " << this->WholeExtent[3] << ", " << this->WholeExtent[4] << ", "

@@ -271,6 +271,16 @@ public:
   vtkGetMacro(LastSkippedEmptySpace, vtkTypeBool);
   ///@}
 
+  /**
+   * The share of the volume's voxels that the last upload of the data wrote to the GPU (0
+   * before the first). New data (a time step) is compared with the uploaded data slab by slab
+   * of slices, by 64-bit fingerprints of the array's memory: data equal to what is uploaded
+   * (a static series, a step shown again) uploads and rebuilds nothing, and where only some
+   * slices changed, only those are written again (and only the bricks that hold them), into the
+   * textures already allocated. Bricks count their shared and ghost layers.
+   */
+  vtkGetMacro(LastDataUploadFraction, double);
+
   ///@{
   /**
    * Distributed rendering (ParaView's pvserver and pvbatch under MPI, or any application whose
@@ -466,6 +476,7 @@ protected:
   vtkTypeBool PrecomputeOnGPU = 1;
   vtkTypeBool EmptySpaceSkipping = 1;
   double LastEmptyCellFraction = 0.0;
+  double LastDataUploadFraction = 0.0;
   vtkTypeBool LastSkippedEmptySpace = 0;
   double Exposure = 1.0;
   int ToneMapping = ClampToneMapping;
@@ -503,8 +514,11 @@ private:
   /// changed (errors reported).
   bool PrepareScene(vtkVolume* volume);
   /// PrepareScene's first part (vtkAVSVolumeMapperData.cxx): the input image and its mask,
-  /// converted and checked when they changed; null after an error (reported).
+  /// converted and checked when they changed (new data with the values of the converted data
+  /// is not converted again); null after an error (reported).
   vtkImageData* PrepareInput();
+  /// PrepareInput's mask, converted and checked when it changed; false after an error.
+  bool PrepareMask();
   /// Prepare's precomputation (vtkAVSVolumeMapperPrecompute.cxx), after the uploads of the data
   /// and the classification: the ambient-occlusion volume; for ambient scattering the table
   /// slice, the averaged extinction, the light volumes (`gpuScattering`: on the GPU) and the

@@ -29,6 +29,7 @@
 #include "vtkVolumeProperty.h"
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 struct vtkAVSVolumeMapper::Internals
@@ -55,6 +56,28 @@ struct vtkAVSVolumeMapper::Internals
   /// Fills the scene's grids from SourceArray (the CPU's precomputation needs them); kept until
   /// the data changes.
   void EnsureHostScalars();
+  /// What a new time step did not change (Fingerprint.h): the fingerprints of the converted
+  /// array's memory in slabs of FingerprintSlices slices (empty where the array has no standard
+  /// memory layout; FingerprintSlices 0 where the slabs are not slices of the texture), and what
+  /// else its conversion depends on (ContentKey: the grid, the array's type, size and
+  /// association); those of the data the scalar textures hold, set at each upload and
+  /// cleared when the textures are released.
+  std::vector<std::uint64_t> Fingerprints, UploadedFingerprints;
+  std::vector<double> ContentKey, UploadedContentKey;
+  int FingerprintSlices = 0;
+  /// Whether the uploaded data had infinities or NaN (their texels depend on the range, which
+  /// any slice may change).
+  bool UploadedRangeDependent = false;
+  bool RangeDependent() const
+  {
+    return this->ScalarInfinities != 0 || !this->Scene.Medium.Validity.Values.empty();
+  }
+  /// Forgets what the textures hold: the next upload writes everything.
+  void ForgetUploadedContent()
+  {
+    this->UploadedFingerprints.clear();
+    this->UploadedContentKey.clear();
+  }
   std::vector<std::array<double, 2>> Ranges; ///< finite range of each component
   vtkImageData* MaskObject = nullptr;        ///< what Scene.Medium.MaskValues came from
   vtkMTimeType MaskTime = 0;

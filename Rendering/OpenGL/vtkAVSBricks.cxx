@@ -134,3 +134,21 @@ avs::Grid vtkAVSBricks::Crop(const avs::Grid& grid,
   }
   return part;
 }
+
+bool vtkAVSBricks::SameSplit(const vtkAVSBricks& other) const
+{
+  if (this->Bricks.size() != other.Bricks.size())
+  {
+    return false;
+  }
+  for (std::size_t b = 0; b < this->Bricks.size(); ++b)
+  {
+    const Brick& x = this->Bricks[b];
+    const Brick& y = other.Bricks[b];
+    if (x.Origin != y.Origin || x.Dimensions != y.Dimensions || x.Low != y.Low || x.High != y.High)
+    {
+      return false;
+    }
+  }
+  return true;
+}

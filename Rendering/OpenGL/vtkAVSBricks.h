@@ -58,6 +58,9 @@ public:
     const std::array<int, 3>& origin,
     const std::array<int, 3>& dimensions);
 
+  /// Whether `other` has the same bricks (the same voxels in each texture).
+  bool SameSplit(const vtkAVSBricks& other) const;
+
   const std::vector<Brick>& GetBricks() const { return this->Bricks; }
   const std::array<int, 3>& GetPartitions() const { return this->Partitions; }
   int GetNumberOfBricks() const { return static_cast<int>(this->Bricks.size()); }

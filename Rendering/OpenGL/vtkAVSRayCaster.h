@@ -205,6 +205,8 @@ public:
   /// are empty for the current transfer functions (vtkAVSVolumeTextures::Occupancy).
   bool GetLastSkippedEmptySpace() const { return this->LastSkipped; }
   double GetEmptyCellFraction() const { return this->Textures.EmptyCellFraction; }
+  /// The voxels the last scalar upload wrote (ghost layers of bricks included).
+  double GetUploadedVoxels() const { return this->Textures.UploadedVoxels; }
   /// Rays the last Render cast along x and y.
   const std::array<int, 2>& GetLastPassSize() const { return this->LastPassSize; }
 

@@ -88,7 +88,8 @@ bool vtkAVSTextureUpload::Upload(vtkOpenGLRenderWindow* window,
   const TexelFormat& format,
   const SlabFill& fill,
   const std::vector<vtkTextureObject*>& held,
-  std::string& error)
+  std::string& error,
+  const std::array<int, 2>& slices)
 {
   GLint limit = 0;
   if (window)
@@ -108,20 +109,25 @@ bool vtkAVSTextureUpload::Upload(vtkOpenGLRenderWindow* window,
   {
     return false;
   }
-  if (texture && !fill && texture->GetWidth() == static_cast<unsigned int>(d[0]) &&
+  const bool keep = texture && texture->GetContext() == window &&
+    texture->GetWidth() == static_cast<unsigned int>(d[0]) &&
     texture->GetHeight() == static_cast<unsigned int>(d[1]) &&
     texture->GetDepth() == static_cast<unsigned int>(d[2]) &&
     texture->GetComponents() == components &&
-    texture->GetInternalFormat(format.HostType, components, false) == internalFormat)
+    texture->GetInternalFormat(format.HostType, components, false) == internalFormat;
+  if (keep && !fill)
   {
     return true; // to be written on the GPU: the storage is reused
   }
-  if (texture)
+  if (!keep)
   {
-    texture->ReleaseGraphicsResources(window);
+    if (texture)
+    {
+      texture->ReleaseGraphicsResources(window);
+    }
+    texture = vtkSmartPointer<vtkTextureObject>::New();
+    texture->SetContext(window);
   }
-  texture = vtkSmartPointer<vtkTextureObject>::New();
-  texture->SetContext(window);
   texture->SetWrapS(vtkTextureObject::ClampToEdge);
   texture->SetWrapT(vtkTextureObject::ClampToEdge);
   texture->SetWrapR(vtkTextureObject::ClampToEdge);
@@ -130,18 +136,22 @@ bool vtkAVSTextureUpload::Upload(vtkOpenGLRenderWindow* window,
   texture->SetInternalFormat(internalFormat);
   vtkAVSRenderPasses::DiscardErrors();   // the check below is of this upload alone
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1); // rows of texels are not padded
-  if (!texture->Create3DFromRaw(static_cast<unsigned int>(d[0]),
-        static_cast<unsigned int>(d[1]),
-        static_cast<unsigned int>(d[2]),
-        components,
-        format.HostType,
-        nullptr))
+  if (!keep &&
+    !texture->Create3DFromRaw(static_cast<unsigned int>(d[0]),
+      static_cast<unsigned int>(d[1]),
+      static_cast<unsigned int>(d[2]),
+      components,
+      format.HostType,
+      nullptr))
   {
     error = "the GPU could not allocate a " + Size(d) + " texture (out of GPU memory?)";
     texture = nullptr;
     return false;
   }
-  if (fill && glGetError() == GL_NO_ERROR)
+  // A kept texture is re-filled where its texels changed; a new one everywhere.
+  const int first = keep ? std::clamp(slices[0], 0, d[2]) : 0;
+  const int last = keep ? std::clamp(slices[1], first, d[2]) : d[2];
+  if (fill && first < last && glGetError() == GL_NO_ERROR)
   {
     const std::size_t slice =
       static_cast<std::size_t>(d[0]) * d[1] * components * format.HostBytes();
@@ -153,9 +163,9 @@ bool vtkAVSTextureUpload::Upload(vtkOpenGLRenderWindow* window,
       : (format.HostType == VTK_UNSIGNED_SHORT ? GL_UNSIGNED_SHORT : GL_FLOAT);
     const GLenum layout = texture->GetFormat(format.HostType, components, false);
     texture->Activate();
-    for (int z = 0; z < d[2]; z += slab)
+    for (int z = first; z < last; z += slab)
     {
-      const int z1 = std::min(d[2], z + slab);
+      const int z1 = std::min(last, z + slab);
       const void* source = fill(z, z1, texels.get());
       glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, z, d[0], d[1], z1 - z, layout, type, source);
     }

@@ -67,12 +67,17 @@ public:
   /// already lie in that layout (nothing written).
   using SlabFill = std::function<const void*(int z0, int z1, void* texels)>;
 
-  /// Allocates `texture` (replacing what it held, or reusing its storage when `fill` is empty
-  /// and the size, channels and format match) as a 3D texture of `dimensions` with `components`
-  /// channels in `format`, clamped to the edge, linear, and fills it slab by slab through
-  /// `fill` (empty: left undefined, to be written on the GPU). `held` are the volume's textures
-  /// for the memory budget (`texture` among them or not). Returns false and says why in `error`
-  /// when the 3D-texture limit, the budget or the GPU refuses; `texture` is then null.
+  /// Every slice of a texture.
+  static constexpr std::array<int, 2> AllSlices{ 0, 1 << 30 };
+
+  /// Makes `texture` a 3D texture of `dimensions` with `components` channels in `format`,
+  /// clamped to the edge, linear, and fills it slab by slab through `fill` (empty: left
+  /// undefined, to be written on the GPU). Where it already is one of that size, channels and
+  /// format its storage is kept and only the slices [slices[0], slices[1]) are written (the
+  /// others keep their texels: what did not change); otherwise it is allocated anew and every
+  /// slice is written. `held` are the volume's textures for the memory budget (`texture` among
+  /// them or not). Returns false and says why in `error` when the 3D-texture limit, the budget
+  /// or the GPU refuses; `texture` is then null.
   static bool Upload(vtkOpenGLRenderWindow* window,
     vtkSmartPointer<vtkTextureObject>& texture,
     const std::array<int, 3>& dimensions,
@@ -80,7 +85,8 @@ public:
     const TexelFormat& format,
     const SlabFill& fill,
     const std::vector<vtkTextureObject*>& held,
-    std::string& error);
+    std::string& error,
+    const std::array<int, 2>& slices = AllSlices);
 
   /// The same for `components` floats per voxel at `data` (null: undefined), in the GL internal
   /// format `internalFormat` (0: 32-bit floats), uploaded slab by slab from `data` itself.

@@ -220,6 +220,12 @@ void PackBox(const avs::VolumeScene& scene,
 }
 
 // PackBox into `texels` of the format's host type.
+// The slices of [0, depth) in `slices`.
+int WrittenSlices(const std::array<int, 2>& slices, int depth)
+{
+  return std::max(0, std::min(slices[1], depth) - std::max(slices[0], 0));
+}
+
 void PackBoxAs(const avs::VolumeScene& scene,
   const vtkAVSVolumeTextures::ScalarSource& source,
   const vtkAVSClassification::Layout& layout,
@@ -326,11 +332,34 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
   {
     split[a] = std::max(split[a], partitions[a]);
   }
-  this->ReleaseBricks(this->Window);
-  this->Bricks.Split(dimensions, split, scene.Scalars.Geometry.Border, ghost);
+  vtkAVSBricks bricks;
+  bricks.Split(dimensions, split, scene.Scalars.Geometry.Border, ghost);
+  // The last upload's textures are re-filled where the data changed (source.ChangedSlices)
+  // when their texels mean the same: the same layout and format, and the same bricks.
+  const bool sameTexels = layout == this->ScalarLayout &&
+    format.InternalFormat == this->ScalarFormat.InternalFormat &&
+    format.HostType == this->ScalarFormat.HostType && format.Scale == this->ScalarFormat.Scale &&
+    format.Shift == this->ScalarFormat.Shift;
+  const bool sameBricks = sameTexels && bricks.SameSplit(this->Bricks) &&
+    std::all_of(this->BrickTextures.begin(),
+      this->BrickTextures.end(),
+      [](const vtkSmartPointer<vtkTextureObject>& t) { return t != nullptr; });
+  const std::array<int, 2> changed =
+    sameTexels ? source.ChangedSlices : vtkAVSTextureUpload::AllSlices;
+  this->UploadedVoxels = 0.0;
+  if (!sameBricks)
+  {
+    this->ReleaseBricks(this->Window);
+  }
+  this->Bricks = bricks;
   if (this->Bricks.IsSplit())
   {
-    if (!this->UploadBricks(scene, source, layout, format, error))
+    if (!this->UploadBricks(scene,
+          source,
+          layout,
+          format,
+          sameBricks ? changed : vtkAVSTextureUpload::AllSlices,
+          error))
     {
       this->ReleaseBricks(this->Window);
       return false;
@@ -367,6 +396,7 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
       texels);
     return texels;
   };
+  const bool kept = this->Scalars != nullptr;
   if (!vtkAVSTextureUpload::Upload(this->Window,
         this->Scalars,
         scene.Scalars.Geometry.Dimensions,
@@ -374,10 +404,13 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
         format,
         fill,
         this->BudgetTextures(),
-        error))
+        error,
+        changed))
   {
     return false;
   }
+  this->UploadedVoxels = static_cast<double>(slice) *
+    WrittenSlices(kept ? changed : vtkAVSTextureUpload::AllSlices, dimensions[2]);
   this->NotePeak();
   this->ScalarLayout = layout;
   this->ScalarFormat = format;
@@ -401,6 +434,7 @@ bool vtkAVSVolumeTextures::UploadBricks(const avs::VolumeScene& scene,
   const ScalarSource& source,
   const vtkAVSClassification::Layout& layout,
   const vtkAVSTextureUpload::TexelFormat& format,
+  const std::array<int, 2>& changed,
   std::string& error)
 {
   // The unsplit texture goes first, so that the budget counts the bricks alone.
@@ -415,6 +449,16 @@ bool vtkAVSVolumeTextures::UploadBricks(const avs::VolumeScene& scene,
   for (std::size_t b = 0; b < bricks.size(); ++b)
   {
     const vtkAVSBricks::Brick& brick = bricks[b];
+    // A kept brick's slices that changed, in its texture's frame (none: left alone).
+    const bool kept = this->BrickTextures[b] != nullptr;
+    const std::array<int, 2> slices = kept
+      ? std::array<int, 2>{ std::max(0, changed[0] - brick.Origin[2]),
+          std::min(brick.Dimensions[2], changed[1] - brick.Origin[2]) }
+      : vtkAVSTextureUpload::AllSlices;
+    if (slices[0] >= slices[1])
+    {
+      continue;
+    }
     const vtkAVSTextureUpload::SlabFill fill = [&scene, &source, &layout, &format, &brick](
                                                  int z0, int z1, void* texels) -> const void*
     {
@@ -428,13 +472,16 @@ bool vtkAVSVolumeTextures::UploadBricks(const avs::VolumeScene& scene,
           format,
           fill,
           this->BudgetTextures(),
-          error))
+          error,
+          slices))
     {
       error = "brick " + std::to_string(b + 1) + " of " + std::to_string(bricks.size()) + " (" +
         std::to_string(brick.Dimensions[0]) + " x " + std::to_string(brick.Dimensions[1]) + " x " +
         std::to_string(brick.Dimensions[2]) + " voxels): " + error;
       return false;
     }
+    this->UploadedVoxels += static_cast<double>(brick.Dimensions[0]) * brick.Dimensions[1] *
+      WrittenSlices(slices, brick.Dimensions[2]);
     this->NotePeak();
   }
   return true;

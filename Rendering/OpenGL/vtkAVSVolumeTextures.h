@@ -87,6 +87,11 @@ public:
     /// memory when its type is the texel type: unsigned 8 or 16 bits, or floats without
     /// infinities), or null.
     const void* Texels = nullptr;
+    /// The slices [first, last) of the data that differ from the last upload's (what a new time
+    /// step changed, vtkAVSVolumeMapper's fingerprints): where the textures of that upload
+    /// can be kept (same size, format and layout, the same bricks), only those slices are
+    /// written again, and only the bricks that hold some of them.
+    std::array<int, 2> ChangedSlices = vtkAVSTextureUpload::AllSlices;
   };
 
   /// The uploads of vtkAVSRayCaster (documented there).
@@ -143,6 +148,8 @@ public:
   avs::ValueRangeGrid ValueRanges;
   vtkSmartPointer<vtkTextureObject> Occupancy;
   double EmptyCellFraction = 0.0;
+  /// The voxels (texels of the bricks, ghost layers included) the last UploadScalars wrote.
+  double UploadedVoxels = 0.0;
   /// What Occupancy was built from: the ranges (counted at each UploadScalars) and the opacity
   /// (avs::ExtinctionKey), so that a colour change or a second call rebuilds nothing.
   int ValueRangesVersion = 0;
@@ -192,6 +199,7 @@ private:
     const ScalarSource& source,
     const vtkAVSClassification::Layout& layout,
     const vtkAVSTextureUpload::TexelFormat& format,
+    const std::array<int, 2>& changed,
     std::string& error);
   double PeakBytes = 0.0;
   mutable int SoftwareRenderer = -1; ///< -1 unknown, 0 no, 1 yes (IsSoftwareRenderer)
