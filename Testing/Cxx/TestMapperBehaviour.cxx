@@ -128,8 +128,15 @@ int main(int argc, char* argv[])
     scene.Render();
     AVS_CHECK(mapper->GetNumberOfExtinctionRebuilds() == 3);
     AVS_CHECK(mapper->GetNumberOfLightVolumeRebuilds() == 13);
-    // New data: everything.
+    // The same values marked modified: nothing (the fingerprints agree).
     data->Modified();
+    scene.Render();
+    AVS_CHECK(mapper->GetNumberOfDataUploads() == 1);
+    AVS_CHECK(mapper->GetNumberOfExtinctionRebuilds() == 3);
+    // New values: everything.
+    vtkDataArray* values = data->GetPointData()->GetScalars();
+    values->SetComponent(0, 0, values->GetComponent(0, 0) + 1.0);
+    values->Modified();
     scene.Render();
     AVS_CHECK(mapper->GetNumberOfDataUploads() == 2);
     AVS_CHECK(mapper->GetNumberOfExtinctionRebuilds() == 4);

@@ -2,6 +2,7 @@
 // nothing accumulates (./avs soak; a short run is a test).
 //
 //   avs-soak [--frames N (2000)] [--rounds R (4)] [--seed S (1)] [--inject-leak]
+//   avs-soak --time-series [--steps N (200)]   (SoakTimeSeries.h)
 //
 // Every frame changes, at random, the camera (also inside the volume and in parallel
 // projection), the lights (count, kind: directional, point, spot, headlight, camera light;
@@ -25,6 +26,7 @@
 // every frame): the run must then fail, which shows that the checks see a leak (a test).
 #include "SoakCensus.h"
 #include "SoakScene.h"
+#include "SoakTimeSeries.h"
 
 #include "vtkAVSOpenGL.h"
 #include "vtkRenderWindow.h"
@@ -54,9 +56,9 @@ constexpr bool AddressSanitizer = false;
 
 int main(int argc, char** argv)
 {
-  int frames = 2000, rounds = 4;
+  int frames = 2000, rounds = 4, steps = 200;
   unsigned long seed = 1;
-  bool injectLeak = false;
+  bool injectLeak = false, timeSeries = false;
   std::vector<std::vector<char>> leaked;
   for (int i = 1; i < argc; ++i)
   {
@@ -69,11 +71,20 @@ int main(int argc, char** argv)
       seed = std::strtoul(argv[++i], nullptr, 10);
     else if (a == "--inject-leak")
       injectLeak = true;
+    else if (a == "--time-series")
+      timeSeries = true;
+    else if (a == "--steps" && i + 1 < argc)
+      steps = std::atoi(argv[++i]);
     else
     {
-      std::printf("usage: avs-soak [--frames N] [--rounds R] [--seed S]\n");
+      std::printf("usage: avs-soak [--frames N] [--rounds R] [--seed S] [--inject-leak]\n"
+                  "       avs-soak --time-series [--steps N]\n");
       return a == "--help" ? 0 : 2;
     }
+  }
+  if (timeSeries)
+  {
+    return RunTimeSeriesSoak(steps, AddressSanitizer) ? 0 : 1;
   }
   if (rounds < 3 || frames < 50 * rounds)
   {
