@@ -250,12 +250,15 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   {
     in.ScalarsUploaded = false;
   }
+  this->LastDataUploadFraction = 0.0; // unless this frame uploads the data
   if (!in.ScalarsUploaded)
   {
     const bool wasBricked = in.RayCaster.IsBricked();
     if (!in.RayCaster.UploadScalars(
           in.Scene, in.ScalarType, in.ScalarSource(), partitions, lookBack, error))
     {
+      // Some textures may hold part of the new data: none is trusted for the next upload.
+      in.ForgetUploadedContent();
       vtkErrorMacro("Cannot render: " << error);
       return false;
     }

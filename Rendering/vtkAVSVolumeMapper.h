@@ -272,12 +272,12 @@ public:
   ///@}
 
   /**
-   * The share of the volume's voxels that the last upload of the data wrote to the GPU (0
-   * before the first). New data (a time step) is compared with the uploaded data slab by slab
-   * of slices, by 64-bit fingerprints of the array's memory: data equal to what is uploaded
-   * (a static series, a step shown again) uploads and rebuilds nothing, and where only some
-   * slices changed, only those are written again (and only the bricks that hold them), into the
-   * textures already allocated. Bricks count their shared and ghost layers.
+   * The share of the volume's voxels that the last frame's upload of the data wrote to the
+   * GPU (0 when the frame uploaded no data). New data (a time step) is compared with the uploaded
+   * data slab by slab of slices, by 64-bit fingerprints of the array's memory: data equal to what
+   * is uploaded (a static series, a step shown again) uploads and rebuilds nothing, and where only
+   * some slices changed, only those are written again (and only the bricks that hold them), into
+   * the textures already allocated. Bricks count their shared and ghost layers.
    */
   vtkGetMacro(LastDataUploadFraction, double);
 

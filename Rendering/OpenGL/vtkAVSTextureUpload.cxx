@@ -162,6 +162,11 @@ bool vtkAVSTextureUpload::Upload(vtkOpenGLRenderWindow* window,
       ? GL_UNSIGNED_BYTE
       : (format.HostType == VTK_UNSIGNED_SHORT ? GL_UNSIGNED_SHORT : GL_FLOAT);
     const GLenum layout = texture->GetFormat(format.HostType, components, false);
+    if (keep && glMemoryBarrier)
+    {
+      // A kept texture may have been written by a compute shader's image stores.
+      glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+    }
     texture->Activate();
     for (int z = first; z < last; z += slab)
     {

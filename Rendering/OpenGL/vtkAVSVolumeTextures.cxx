@@ -396,7 +396,7 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
       texels);
     return texels;
   };
-  const bool kept = this->Scalars != nullptr;
+  const vtkTextureObject* before = this->Scalars;
   if (!vtkAVSTextureUpload::Upload(this->Window,
         this->Scalars,
         scene.Scalars.Geometry.Dimensions,
@@ -409,6 +409,7 @@ bool vtkAVSVolumeTextures::UploadScalars(const avs::VolumeScene& scene,
   {
     return false;
   }
+  const bool kept = before && before == this->Scalars.Get(); // (else allocated and all written)
   this->UploadedVoxels = static_cast<double>(slice) *
     WrittenSlices(kept ? changed : vtkAVSTextureUpload::AllSlices, dimensions[2]);
   this->NotePeak();
@@ -459,6 +460,7 @@ bool vtkAVSVolumeTextures::UploadBricks(const avs::VolumeScene& scene,
     {
       continue;
     }
+    const vtkTextureObject* before = this->BrickTextures[b];
     const vtkAVSTextureUpload::SlabFill fill = [&scene, &source, &layout, &format, &brick](
                                                  int z0, int z1, void* texels) -> const void*
     {
@@ -480,8 +482,9 @@ bool vtkAVSVolumeTextures::UploadBricks(const avs::VolumeScene& scene,
         std::to_string(brick.Dimensions[2]) + " voxels): " + error;
       return false;
     }
+    const bool refilled = before && before == this->BrickTextures[b].Get();
     this->UploadedVoxels += static_cast<double>(brick.Dimensions[0]) * brick.Dimensions[1] *
-      WrittenSlices(slices, brick.Dimensions[2]);
+      WrittenSlices(refilled ? slices : vtkAVSTextureUpload::AllSlices, brick.Dimensions[2]);
     this->NotePeak();
   }
   return true;

@@ -184,7 +184,7 @@ int main(int, char*[])
         auto expected = RenderVolume(other, otherRenderer, fresh, property);
         const int most = MaximumDifference(picture, expected);
         const bool uploaded = mapper->GetNumberOfDataUploads() > uploads;
-        const double fraction = uploaded ? mapper->GetLastDataUploadFraction() : 0.0;
+        const double fraction = mapper->GetLastDataUploadFraction();
         const std::string what = series + ", " + kinds[kind] + ", " + step.Name;
         std::cout << what << ": " << (uploaded ? "uploaded" : "not uploaded") << ", "
                   << fraction * 100.0 << " % of the voxels written, " << Rebuilds(mapper) - before

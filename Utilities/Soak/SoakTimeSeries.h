@@ -7,13 +7,14 @@
 // each fifty steps, five steps repeat the step before them (new images with the same values: a
 // static series, or a pause in the simulation).
 //
-// Checks: every step with new values uploads (the local change writes less than half of the
-// voxels) and draws without an error; a repeated step uploads and rebuilds nothing and gives the
-// frame of the step it repeats, bit for bit; from the first checkpoint (step 25) on, no window
-// holds more GL objects than it did there, each mapper's GPU memory is what it was after the
-// first step, and the process's resident memory peaks at most 32 MiB above its peak over the
-// first 100 steps (not compared under AddressSanitizer, whose quarantine keeps freed memory;
-// LeakSanitizer checks for leaks at exit).
+// Checks: every step with new values uploads (the change of a block writes some voxels and
+// less than half of them) and draws without an error; a repeated step uploads and rebuilds
+// nothing and gives the frame of the step it repeats, bit for bit; at every checkpoint (each 25
+// steps) each window's frame is what a new mapper draws from that step alone in a new window, bit
+// for bit; from the first checkpoint on, no window holds more GL objects than it did there, each
+// mapper's GPU memory is what it was after the first step, and the process's resident memory
+// peaks at most 32 MiB above its peak over the first 100 steps (not compared under
+// AddressSanitizer, whose quarantine keeps freed memory; LeakSanitizer checks for leaks at exit).
 #ifndef SoakTimeSeries_h
 #define SoakTimeSeries_h
 
