@@ -8,6 +8,7 @@
 //  - a step that moves the volume, or that goes back to an earlier step, writes every slice
 //    with material (the empty slices at the ends stay);
 //  - NaN voxels make the texels depend on the range, which any slice may change: everything.
+// Also two independent components as cell data (the texture's slices are the cells').
 // For EA, AO, and ambient scattering in the paper's and the extended model, on 16-bit data
 // (unsplit and split into 2 x 2 x 2 bricks) and float data with NaN voxels.
 #include "DataTestScene.h"
@@ -38,32 +39,59 @@ vtkSmartPointer<vtkImageData> Copy(vtkImageData* source)
   return image;
 }
 
-// `source` with a dense block in the slices [ChangedFrom, ChangedTo).
+// The image's scalars: N^3 point values, or the cell values of an image of (N + 1)^3 points.
+vtkDataArray* Values(vtkImageData* image)
+{
+  vtkDataArray* points = image->GetPointData()->GetScalars();
+  return points ? points : image->GetCellData()->GetScalars();
+}
+
+// `source` with a dense block in the slices [ChangedFrom, ChangedTo) (every component).
 vtkSmartPointer<vtkImageData> LocallyChanged(vtkImageData* source)
 {
   auto image = Copy(source);
-  vtkDataArray* a = image->GetPointData()->GetScalars();
+  vtkDataArray* a = Values(image);
   for (int k = ChangedFrom; k < ChangedTo; ++k)
     for (int j = 10; j < 30; ++j)
       for (int i = 16; i < 48; ++i)
       {
         const vtkIdType id = (static_cast<vtkIdType>(k) * N + j) * N + i;
-        a->SetComponent(id, 0, 700.0);
+        for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+        {
+          a->SetComponent(id, c, 700.0);
+        }
       }
   return image;
 }
 
-// `source` moved by 5 voxels along x (every slice changes).
+// `source` moved by 5 voxels along x (every slice with material changes).
 vtkSmartPointer<vtkImageData> Moved(vtkImageData* source)
 {
   auto image = Copy(source);
-  vtkDataArray* from = source->GetPointData()->GetScalars();
-  vtkDataArray* to = image->GetPointData()->GetScalars();
+  vtkDataArray* from = Values(source);
+  vtkDataArray* to = Values(image);
   for (vtkIdType id = 0; id < to->GetNumberOfTuples(); ++id)
   {
     const vtkIdType i = id % N;
-    to->SetComponent(id, 0, from->GetComponent(id - i + (i + N - 5) % N, 0));
+    for (int c = 0; c < to->GetNumberOfComponents(); ++c)
+    {
+      to->SetComponent(id, c, from->GetComponent(id - i + (i + N - 5) % N, c));
+    }
   }
+  return image;
+}
+
+// Two components (the shell and the slab) as cell data: N^3 cells.
+vtkSmartPointer<vtkImageData> TwoComponentCells()
+{
+  auto image = MakeTestImage(N + 1);
+  image->GetCellData()->SetScalars(AddArray(image,
+    "two",
+    2,
+    true,
+    [](double x, double y, double z) {
+      return std::array<double, 4>{ ShellValue(x, y, z)[0], SlabValue(x, y, z)[0], 0, 0 };
+    }));
   return image;
 }
 
@@ -136,15 +164,24 @@ int main(int, char*[])
     AddTestLights(r);
     PlaceTestCamera(r->GetActiveCamera());
   }
-  auto property = MakeTestProperty();
+  auto single = MakeTestProperty();
 
   int failures = 0;
   const char* kinds[4] = { "EA", "AO", "AS paper", "AS extended" };
-  for (int data = 0; data < 3; ++data)
+  // Two independent components share the first's functions.
+  auto independent = MakeTestProperty();
+  independent->IndependentComponentsOn();
+  independent->SetColor(1, independent->GetRGBTransferFunction(0));
+  independent->SetScalarOpacity(1, independent->GetScalarOpacity(0));
+  independent->SetScalarOpacityUnitDistance(1, independent->GetScalarOpacityUnitDistance(0));
+  for (int data = 0; data < 4; ++data)
   {
-    const bool bricks = data == 1, nan = data == 2;
-    const std::string series = nan ? "floats with NaN" : (bricks ? "16 bits, bricks" : "16 bits");
-    auto first = nan ? FloatsWithNaN() : MakeTestVolume(N);
+    const bool bricks = data == 1, nan = data == 2, cells = data == 3;
+    const std::string series = cells
+      ? "two components, cell data"
+      : (nan ? "floats with NaN" : (bricks ? "16 bits, bricks" : "16 bits"));
+    auto first = cells ? TwoComponentCells() : (nan ? FloatsWithNaN() : MakeTestVolume(N));
+    vtkVolumeProperty* property = cells ? independent.Get() : single.Get();
     const double local = static_cast<double>(ChangedTo - ChangedFrom) / N;
     // (Bricks count their shared and ghost layers: more than the volume's voxels.)
     std::vector<Step> steps = { { "first", first, 1.0, 2.0 } };
