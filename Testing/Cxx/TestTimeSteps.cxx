@@ -8,9 +8,9 @@
 //  - a step that moves the volume, or that goes back to an earlier step, writes every slice
 //    with material (the empty slices at the ends stay);
 //  - NaN voxels make the texels depend on the range, which any slice may change: everything.
-// Also two independent components as cell data (the texture's slices are the cells').
 // For EA, AO, and ambient scattering in the paper's and the extended model, on 16-bit data
-// (unsplit and split into 2 x 2 x 2 bricks) and float data with NaN voxels.
+// (unsplit and split into 2 x 2 x 2 bricks), float data with NaN voxels, and two independent
+// components as cell data (the texture's slices are the cells').
 #include "DataTestScene.h"
 
 #include "vtkAmbientOcclusionVolumeMapper.h"
@@ -81,17 +81,17 @@ vtkSmartPointer<vtkImageData> Moved(vtkImageData* source)
   return image;
 }
 
+// The shell and the slab, two components.
+std::array<double, 4> ShellAndSlab(double x, double y, double z)
+{
+  return { ShellValue(x, y, z)[0], SlabValue(x, y, z)[0], 0, 0 };
+}
+
 // Two components (the shell and the slab) as cell data: N^3 cells.
 vtkSmartPointer<vtkImageData> TwoComponentCells()
 {
   auto image = MakeTestImage(N + 1);
-  image->GetCellData()->SetScalars(AddArray(image,
-    "two",
-    2,
-    true,
-    [](double x, double y, double z) {
-      return std::array<double, 4>{ ShellValue(x, y, z)[0], SlabValue(x, y, z)[0], 0, 0 };
-    }));
+  image->GetCellData()->SetScalars(AddArray(image, "two", 2, true, ShellAndSlab));
   return image;
 }
 
