@@ -499,6 +499,16 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   frame.ImageSampleDistance = distance;
   frame.Display = this->ResolveDisplay(renderer, volume);
   frame.SkipEmptySpace = this->EmptySpaceSkipping != 0;
+  // VTK's still frame: a second or more allotted (the interactor's frames get less).
+  this->ResolveRefinement(renderer,
+    volume,
+    allocated >= 1.0,
+    in.RayCaster.IsBricked(),
+    frame.Refinement.Enabled,
+    frame.Refinement.Still,
+    frame.Refinement.Key,
+    frame.Refinement.Geometry);
+  frame.Refinement.MaximumSamples = this->MaximumSamplesPerPixel;
   // The adjustment times the ray-casting pass alone (the precomputation does not scale with the
   // rays), finished on the GPU as vtkOpenGLGPUVolumeRayCastMapper finishes its frames.
   if (adjust)
@@ -512,7 +522,7 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     vtkErrorMacro("Cannot render: " << error);
     return;
   }
-  if (adjust)
+  if (adjust && !in.RayCaster.GetLastRefined()) // (a refined frame is no ray-casting pass)
   {
     window->WaitForCompletion();
     const auto& rays = in.RayCaster.GetLastPassSize();
@@ -585,6 +595,7 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastEmptyCellFraction: " << this->LastEmptyCellFraction << "\n";
   os << indent << "LastDataUploadFraction: " << this->LastDataUploadFraction << "\n";
   os << indent << "LastSkippedEmptySpace: " << (this->LastSkippedEmptySpace ? "yes" : "no") << "\n";
+  os << indent << "SamplesPerPixel: " << this->GetSamplesPerPixel() << "\n";
   os << indent << "WholeExtent: (" << this->WholeExtent[0] << ", " << this->WholeExtent[1] << ", "
      << this->WholeExtent[2] << ", " << this->WholeExtent[3] << ", " << this->WholeExtent[4] << ", "
      << this->WholeExtent[5] << ")"

@@ -70,6 +70,7 @@ struct ScatteringParameters;
 class ScatteringTable;
 }
 
+class vtkFloatArray;
 class vtkImageData;
 class vtkMatrix4x4;
 class vtkMultiProcessController;
@@ -281,6 +282,25 @@ public:
    */
   vtkGetMacro(LastDataUploadFraction, double);
 
+  /**
+   * Ambient scattering's path-traced refinement (vtkAmbientScatteringVolumeMapper::
+   * SetPathTracedRefinement): the path-traced samples per pixel taken since the last change
+   * (0 when off, and for the other mappers).
+   */
+  int GetSamplesPerPixel();
+
+  /**
+   * The path-traced refinement's buffers, for measurements and tests: the ambient-scattering
+   * picture the refinement started from, the running mean of the path tracer's samples and the
+   * mean of their squares, each a 4-component array of the viewport's pixels (bottom row first;
+   * premultiplied linear radiance, and alpha: 1 - transmittance, the share of camera rays that
+   * met the medium). False when there is no sample yet. Makes the render window's context
+   * current.
+   */
+  bool GetRefinementBuffers(vtkFloatArray* ambient,
+    vtkFloatArray* mean,
+    vtkFloatArray* meanOfSquares);
+
   ///@{
   /**
    * Distributed rendering (ParaView's pvserver and pvbatch under MPI, or any application whose
@@ -490,6 +510,8 @@ protected:
   vtkTypeBool LitAsPiece = 0;
   int MaximumGPUMemory = 0;
   int Partitions[3] = { 1, 1, 1 };
+  vtkTypeBool PathTracedRefinement = 0; ///< ambient scattering only
+  int MaximumSamplesPerPixel = 1024;
 
   int NumberOfDataUploads = 0;
   int NumberOfExtinctionRebuilds = 0;
@@ -542,6 +564,21 @@ private:
   // One warning when the property's shading flags ask for what this mapper does not do.
   void WarnAboutShading(vtkVolumeProperty* property);
   std::string ShadingWarning;
+  /// The path-traced refinement's settings for this frame (vtkAVSVolumeMapperRefinement.cxx):
+  /// on where asked for and possible (one warning where not), still where the frame is not
+  /// interactive, and the key of everything the picture depends on apart from the display
+  /// transform: the data, the classification, the clipping, the parameters and the other props
+  /// that may hide the volume (`key`), the camera, the volume's matrix and the lights
+  /// (`geometry`).
+  void ResolveRefinement(vtkRenderer* renderer,
+    vtkVolume* volume,
+    bool still,
+    bool bricked,
+    bool& enabled,
+    bool& isStill,
+    std::vector<double>& key,
+    std::vector<double>& geometry);
+  std::string RefinementWarning;
 };
 
 #endif

@@ -65,6 +65,8 @@ void vtkAmbientScatteringVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ScatteringModel: " << this->GetScatteringModelAsString() << "\n";
   os << indent << "DiffusionVolumeMaximumDimension: " << this->DiffusionVolumeMaximumDimension
      << "\n";
+  os << indent << "PathTracedRefinement: " << (this->PathTracedRefinement ? "On" : "Off") << "\n";
+  os << indent << "MaximumSamplesPerPixel: " << this->MaximumSamplesPerPixel << "\n";
   os << indent << "ScatteringTableFileName: "
      << (this->ScatteringTableFileName ? this->ScatteringTableFileName : "(the shipped table)")
      << "\n";

@@ -147,6 +147,38 @@ public:
 
   ///@{
   /**
+   * Path-traced refinement: while the view rests, every still frame (one after which nothing
+   * changed: camera, viewport, lights, the volume's matrix, property, data, mask, clipping,
+   * cropping, this mapper's parameters, the other 3D props) adds one sample per pixel of an
+   * unbiased GPU path tracer of exactly the medium this mapper draws (delta and ratio tracking
+   * over a grid of majorants, next-event estimation towards every light with VTK's attenuation
+   * and cones, Henyey–Greenstein scattering, clipping, cropping, masks, components, NaN voxels
+   * and the depth of opaque geometry), and shows the ambient-scattering picture moved towards the
+   * path tracer's running mean by the weight that minimises the expected error (bias against
+   * variance, measured per pixel over a 5 x 5 window; Rendering/Core/Refinement.h): never noisier
+   * than the ambient-scattering picture, and converging to the path-traced truth. Any change
+   * restarts from the ambient-scattering picture; a new exposure or tone curve does not. The
+   * interactor's reduced frames (less than a second allotted, or an image sample distance other
+   * than 1) never path-trace. Call Render() again (a timer, an idle loop) to refine; the
+   * refinement stops at MaximumSamplesPerPixel. Not done for a piece of a distributed image or a
+   * volume split into bricks (a warning says so). Default off.
+   */
+  vtkSetMacro(PathTracedRefinement, vtkTypeBool);
+  vtkGetMacro(PathTracedRefinement, vtkTypeBool);
+  vtkBooleanMacro(PathTracedRefinement, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Samples per pixel at which the path-traced refinement stops adding (GetSamplesPerPixel says
+   * how many it has). Default 1024.
+   */
+  vtkSetClampMacro(MaximumSamplesPerPixel, int, 1, 1 << 20);
+  vtkGetMacro(MaximumSamplesPerPixel, int);
+  ///@}
+
+  ///@{
+  /**
    * The scattering table file. Default: empty, the table shipped with the module.
    */
   vtkSetStringMacro(ScatteringTableFileName);

@@ -316,15 +316,26 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
     avs::PathTracerSettings settings;
     settings.SamplesPerPixel = this->SamplesPerPixel;
     settings.Seed = static_cast<std::uint64_t>(static_cast<std::uint32_t>(this->Seed));
-    image = avs::RenderPathTraced(scene,
+    avs::Image squares;
+    image = avs::RenderPathTraced(
+      scene,
       resolved,
       settings,
       vtkAVSSceneTranslator::ToCamera(camera),
       w,
       h,
       nullptr,
-      [this](double v) { this->UpdateProgress(v); });
+      [this](double v) { this->UpdateProgress(v); },
+      &squares);
     this->WriteOutput(output, image, scene.Background, this->ResolveDisplay(scene));
+    // The samples' second moment, for the variance of the estimate (the tests of the GPU path
+    // tracer).
+    vtkNew<vtkFloatArray> second;
+    second->SetName("RadianceSecondMoment");
+    second->SetNumberOfComponents(4);
+    second->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+    std::copy(squares.Pixels.begin(), squares.Pixels.end(), second->GetPointer(0));
+    output->GetPointData()->AddArray(second);
     this->UpdateProgress(1.0);
     return 1;
   }

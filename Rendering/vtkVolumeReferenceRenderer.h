@@ -12,7 +12,8 @@
  *
  * The output has ImageSize pixels, 3-component unsigned char scalars "RGB" (the volume
  * composited over Background) and a 4-component float array "Radiance" (premultiplied radiance
- * and alpha = 1 - transmittance).
+ * and alpha = 1 - transmittance); path tracing adds "RadianceSecondMoment", the mean of the
+ * squares of the samples (alpha: of the 0/1 hits), from which the estimate's variance follows.
  *
  * Clipping planes and cropping (as a vtkVolumeMapper's) remove material for every purpose.
  * NaN voxels are empty space, infinities are clamped (one warning counts them).

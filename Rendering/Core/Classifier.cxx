@@ -379,4 +379,32 @@ std::vector<double> ExtinctionKey(const VolumeScene& scene)
   return key;
 }
 
+namespace
+{
+void AddColors(std::vector<double>& key, const TransferFunction& t)
+{
+  key.push_back(static_cast<double>(t.Color.size()));
+  for (const std::array<float, 3>& c : t.Color)
+  {
+    key.insert(key.end(), c.begin(), c.end());
+  }
+}
+} // namespace
+
+std::vector<double> AppearanceKey(const VolumeScene& scene)
+{
+  std::vector<double> key = ExtinctionKey(scene);
+  const MediumOptions& m = scene.Medium;
+  AddColors(key, scene.Transfer);
+  for (const MediumComponent& c : m.Components)
+  {
+    AddColors(key, c.Transfer);
+  }
+  for (const TransferFunction& t : m.Labels)
+  {
+    AddColors(key, t);
+  }
+  return key;
+}
+
 } // namespace avs

@@ -79,6 +79,9 @@ private:
 /// numbers: the renderers rebuild their extinction-based volumes when it changes and not for a
 /// change of colour alone.
 std::vector<double> ExtinctionKey(const VolumeScene& scene);
+/// ExtinctionKey and the colour tables: everything the classification of a sample depends on
+/// apart from the grids (the path-traced refinement restarts when it changes).
+std::vector<double> AppearanceKey(const VolumeScene& scene);
 
 } // namespace avs
 

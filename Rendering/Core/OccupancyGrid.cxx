@@ -112,11 +112,11 @@ ValueRangeGrid::ValueRangeGrid(const std::array<int, 3>& dimensions,
   }
 }
 
-std::vector<unsigned char> Occupancy(const ValueRangeGrid& ranges, const Classifier& classifier)
+std::vector<float> Majorants(const ValueRangeGrid& ranges, const Classifier& classifier)
 {
-  std::vector<unsigned char> occupied(ranges.NumberOfCells(), 0);
+  std::vector<float> majorants(ranges.NumberOfCells(), 0.0f);
   const int C = ranges.Components();
-  for (std::size_t cell = 0; cell < occupied.size(); ++cell)
+  for (std::size_t cell = 0; cell < majorants.size(); ++cell)
   {
     double low[4] = { 0, 0, 0, 0 }, high[4] = { 0, 0, 0, 0 };
     bool any = true;
@@ -126,7 +126,28 @@ std::vector<unsigned char> Occupancy(const ValueRangeGrid& ranges, const Classif
       high[c] = ranges.High(cell, c);
       any = any && low[c] <= high[c];
     }
-    occupied[cell] = any && classifier.BoundOfValues(low, high, true) > 0.0 ? 1 : 0;
+    if (any)
+    {
+      // Rounded up, so that the float is still a bound.
+      const double bound = classifier.BoundOfValues(low, high, true);
+      float f = static_cast<float>(bound);
+      if (static_cast<double>(f) < bound)
+      {
+        f = std::nextafter(f, std::numeric_limits<float>::infinity());
+      }
+      majorants[cell] = f;
+    }
+  }
+  return majorants;
+}
+
+std::vector<unsigned char> Occupancy(const ValueRangeGrid& ranges, const Classifier& classifier)
+{
+  const std::vector<float> majorants = Majorants(ranges, classifier);
+  std::vector<unsigned char> occupied(majorants.size(), 0);
+  for (std::size_t cell = 0; cell < majorants.size(); ++cell)
+  {
+    occupied[cell] = majorants[cell] > 0.0f ? 1 : 0;
   }
   return occupied;
 }

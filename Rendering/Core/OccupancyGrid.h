@@ -76,6 +76,12 @@ private:
 /// functions, 0 where none can (x fastest).
 std::vector<unsigned char> Occupancy(const ValueRangeGrid& ranges, const Classifier& classifier);
 
+/// For each cell of `ranges` the classifier's bound of sigma_t (per data unit) over its ranges,
+/// as Occupancy takes it (0 where no sample can have material): the majorants of the GPU path
+/// tracer's delta and ratio tracking (avs_pathtrace_fs.glsl), on the cells empty-space skipping
+/// uses.
+std::vector<float> Majorants(const ValueRangeGrid& ranges, const Classifier& classifier);
+
 /// The share of cells that are 0 in `occupancy`.
 double EmptyFraction(const std::vector<unsigned char>& occupancy);
 

@@ -249,12 +249,17 @@ Image RenderPathTraced(const VolumeScene& scene,
   int width,
   int height,
   PathTracerStatistics* statistics,
-  const std::function<void(double)>& progress)
+  const std::function<void(double)>& progress,
+  Image* secondMoment)
 {
   Image image;
   image.Width = std::max(0, width);
   image.Height = std::max(0, height);
   image.Pixels.assign(4 * static_cast<std::size_t>(image.Width) * image.Height, 0.0f);
+  if (secondMoment)
+  {
+    *secondMoment = image;
+  }
   if (scene.Scalars.Values.empty())
   {
     return image;
@@ -264,6 +269,7 @@ Image RenderPathTraced(const VolumeScene& scene,
   const VolumeTracker tracker(scene, majorants);
   const PathContext context{ scene, p, settings, tracker };
   std::vector<double> sum(4 * static_cast<std::size_t>(image.Width) * image.Height, 0.0);
+  std::vector<double> squares(secondMoment ? sum.size() : 0, 0.0);
   std::mutex statsMutex;
   PathTracerStatistics total;
   const int spp = std::max(1, settings.SamplesPerPixel);
@@ -288,6 +294,14 @@ Image RenderPathTraced(const VolumeScene& scene,
             s[1] += L.y;
             s[2] += L.z;
             s[3] += hit ? 1.0 : 0.0;
+            if (secondMoment)
+            {
+              double* q = &squares[4 * pixel];
+              q[0] += L.x * L.x;
+              q[1] += L.y * L.y;
+              q[2] += L.z * L.z;
+              q[3] += hit ? 1.0 : 0.0;
+            }
           }
         }
         std::lock_guard<std::mutex> lock(statsMutex);
@@ -303,6 +317,16 @@ Image RenderPathTraced(const VolumeScene& scene,
   for (std::size_t i = 0; i < sum.size(); ++i)
   {
     image.Pixels[i] = static_cast<float>(sum[i] / spp);
+  }
+  if (secondMoment)
+  {
+    secondMoment->Width = image.Width;
+    secondMoment->Height = image.Height;
+    secondMoment->Pixels.resize(squares.size());
+    for (std::size_t i = 0; i < squares.size(); ++i)
+    {
+      secondMoment->Pixels[i] = static_cast<float>(squares[i] / spp);
+    }
   }
   if (statistics)
   {

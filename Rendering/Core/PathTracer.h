@@ -39,7 +39,9 @@ struct PathTracerStatistics
 /// weight; resolved). As the reference renderer's: RGB the radiance the volume sends to the
 /// camera (the environment is black), A the share of primary rays that collided (an unbiased
 /// estimate of 1 - transmittance), so Image::Composited puts it over a background. `progress` gets
-/// the fraction of passes done, from the calling thread.
+/// the fraction of passes done, from the calling thread. `secondMoment`, when given, receives the
+/// mean of the squares of the samples per pixel and channel (alpha: the mean of the 0/1 hits), so
+/// that a caller can tell the estimate's variance (the GPU estimator's tests).
 Image RenderPathTraced(const VolumeScene& scene,
   const ScatteringParameters& parameters,
   const PathTracerSettings& settings,
@@ -47,7 +49,8 @@ Image RenderPathTraced(const VolumeScene& scene,
   int width,
   int height,
   PathTracerStatistics* statistics = nullptr,
-  const std::function<void(double)>& progress = {});
+  const std::function<void(double)>& progress = {},
+  Image* secondMoment = nullptr);
 
 /// Tools of the path tracer, exposed for the tests.
 class VolumeTracker

@@ -55,6 +55,7 @@ void vtkAVSRayCaster::ReleaseGraphicsResources(vtkWindow* window)
   this->Diffuse.ReleaseGraphicsResources(window); // the extended model
   this->Depth.ReleaseGraphicsResources(window);
   this->ImageSampler.ReleaseGraphicsResources(window);
+  this->Refinement.ReleaseGraphicsResources(window);
   if (this->Quad && window)
   {
     this->Quad->ReleaseGraphicsResources(window);
@@ -493,6 +494,21 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     }
   }
 
+  // Ambient scattering's path-traced refinement: its buffers restart when the key or the size
+  // changes, at every frame, so that a reduced frame after a change adds nothing to old samples.
+  this->LastRefined = false;
+  const bool refine = frame.Refinement.Enabled &&
+    frame.Mode == avs::RenderMode::AmbientScattering && !bricked && !frame.PeelingFront;
+  if (!refine)
+  {
+    this->Refinement.Reset(); // the samples were of another frame
+  }
+  else if (!this->Refinement.Begin(
+             window, width, height, frame.Refinement.Key, frame.Refinement.Geometry, error))
+  {
+    return false;
+  }
+
   // The render passes attached to the volume set what they need (vtkSSAOPass: the colour
   // target alone).
   vtkAVSRenderPasses::SetShaderParameters(frame.Prop, frame.Mapper, program);
@@ -504,23 +520,33 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     vtkAVSRenderPasses::ScopedDrawBuffer target(state, frame.PeelingFront ? 1 : 0);
     // At an image sample distance other than 1 (and for a split volume) the pass goes through an
     // offscreen target and is composited from it; otherwise, or when that target cannot be made,
-    // straight into the viewport.
+    // straight into the viewport. A still frame of the path-traced refinement shows the refined
+    // picture instead.
     vtkOpenGLShaderCache* cache = window->GetShaderCache();
-    if (this->ImageSampler.Draw(
-          window,
-          x,
-          y,
-          width,
-          height,
-          frame.ImageSampleDistance,
-          [&]
-          {
-            cache->ReadyShaderProgram(program);
-            program->SetUniformi("u_displayInRay", 0); // the compositing applies it
-            drawPass();
-          },
-          frame.Display,
-          bricked))
+    if (refine && this->Refine(renderer, frame, program, drawPass, x, y, width, height, error))
+    {
+      this->LastPassSize = { width, height };
+      this->LastRefined = true;
+    }
+    else if (!error.empty())
+    {
+      return false;
+    }
+    else if (this->ImageSampler.Draw(
+               window,
+               x,
+               y,
+               width,
+               height,
+               frame.ImageSampleDistance,
+               [&]
+               {
+                 cache->ReadyShaderProgram(program);
+                 program->SetUniformi("u_displayInRay", 0); // the compositing applies it
+                 drawPass();
+               },
+               frame.Display,
+               bricked))
     {
       this->LastPassSize = { this->ImageSampler.GetTargetWidth(),
         this->ImageSampler.GetTargetHeight() };

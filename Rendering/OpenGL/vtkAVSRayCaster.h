@@ -28,12 +28,14 @@
 #include "vtkAVSImageSampler.h"
 #include "vtkAVSLightVolumePass.h"
 #include "vtkAVSOcclusionPass.h"
+#include "vtkAVSRefinement.h"
 #include "vtkAVSShaderOptions.h"
 #include "vtkAVSVolumeTextures.h"
 #include "vtkOpenGLRenderWindow.h" // for vtkWeakPointer<vtkOpenGLRenderWindow>
 #include "vtkSmartPointer.h"
 #include "vtkWeakPointer.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -44,6 +46,7 @@ class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkProp;
 class vtkRenderer;
+class vtkShaderProgram;
 class vtkTextureObject;
 class vtkWindow;
 
@@ -196,6 +199,19 @@ public:
     /// Leap over the empty cells (avs_skip.glsl) where the frame allows it: the composite
     /// blend, and for ambient scattering the ring's look-ahead.
     bool SkipEmptySpace = true;
+    /// Ambient scattering's path-traced refinement (vtkAVSRefinement): on, whether this frame
+    /// may add samples (a still frame; the ray caster also wants one ray per pixel), what must
+    /// not change for the samples to add up (the mapper's key, exact, and its geometry: camera,
+    /// matrices and lights, to a millionth; the viewport's size is added here) and the samples
+    /// per pixel at which it stops.
+    struct RefinementSettings
+    {
+      bool Enabled = false;
+      bool Still = false;
+      std::vector<double> Key;
+      std::vector<double> Geometry;
+      int MaximumSamples = 1024;
+    } Refinement;
   };
 
   /// Draws the volume into the current viewport (the renderer's, or a render pass's). Returns
@@ -209,8 +225,27 @@ public:
   double GetUploadedVoxels() const { return this->Textures.UploadedVoxels; }
   /// Rays the last Render cast along x and y.
   const std::array<int, 2>& GetLastPassSize() const { return this->LastPassSize; }
+  /// The path-traced refinement's state (samples, buffers).
+  vtkAVSRefinement& GetRefinement() { return this->Refinement; }
+  /// Whether the last Render showed the refined picture.
+  bool GetLastRefined() const { return this->LastRefined; }
 
 private:
+  /// A still frame of the refinement (vtkAVSRayCasterRefine.cxx): the ambient picture taken
+  /// where there is none (`drawPass` with the ray-casting program, current), one path-traced
+  /// sample added below the maximum, and the refined picture shown over the viewport. False
+  /// having drawn nothing when this frame is not refined (reduced, or no ambient picture can be
+  /// taken), with `error` set when OpenGL failed.
+  bool Refine(vtkRenderer* renderer,
+    const Frame& frame,
+    vtkShaderProgram* program,
+    const std::function<void()>& drawPass,
+    int x,
+    int y,
+    int width,
+    int height,
+    std::string& error);
+
   /// The ray-casting program for `mode` and these defines (built again when they change).
   bool EnsureProgram(avs::RenderMode mode, const std::string& defines);
 
@@ -230,6 +265,8 @@ private:
   int QuadMode = -1;
   std::string QuadDefines;
   vtkAVSImageSampler ImageSampler; ///< the pass at image sample distances other than 1
+  vtkAVSRefinement Refinement;     ///< ambient scattering's path-traced refinement
+  bool LastRefined = false;
   std::array<int, 2> LastPassSize{ 0, 0 };
 };
 

@@ -161,6 +161,22 @@ std::string vtkAVSShaderAssembly::UpsampleFragmentShader()
   return fs;
 }
 
+std::string vtkAVSShaderAssembly::PathTraceFragmentShader(const std::string& defines)
+{
+  std::string fs = avs_pathtrace_fs;
+  Replace(fs, "//AVS::Classify::Dec", defines + avs_classify);
+  Replace(fs, "//AVS::Lights::Dec", avs_lights);
+  Replace(fs, "//AVS::Clip::Dec", avs_clip);
+  return fs;
+}
+
+std::string vtkAVSShaderAssembly::RefineFragmentShader()
+{
+  std::string fs = avs_refine_fs;
+  Replace(fs, "//AVS::Display::Dec", avs_display);
+  return fs;
+}
+
 std::string vtkAVSShaderAssembly::AveragedExtinctionShader(const std::string& defines)
 {
   std::string average = avs_average_cs;

@@ -50,6 +50,11 @@ public:
   /// The image sampler's compositing fragment shader (avs_upsample_fs.glsl) with the display
   /// transform.
   static std::string UpsampleFragmentShader();
+  /// The path tracer of the refinement (avs_pathtrace_fs.glsl) with `defines` (the ray
+  /// caster's, for its classification, lights and clipping) and the snippets they choose.
+  static std::string PathTraceFragmentShader(const std::string& defines);
+  /// The refinement's picture (avs_refine_fs.glsl) with the display transform.
+  static std::string RefineFragmentShader();
 
   /// The averaged-extinction compute shader (avs_average_cs.glsl) with `defines` and the
   /// classification and clipping snippets.

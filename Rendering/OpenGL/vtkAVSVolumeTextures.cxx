@@ -517,7 +517,13 @@ bool vtkAVSVolumeTextures::UploadOccupancy(const avs::VolumeScene& scene, std::s
   {
     return true; // built from the same ranges and opacity
   }
-  std::vector<unsigned char> occupied = avs::Occupancy(this->ValueRanges, avs::Classifier(scene));
+  this->MajorantValues = avs::Majorants(this->ValueRanges, avs::Classifier(scene));
+  ++this->MajorantsVersion;
+  std::vector<unsigned char> occupied(this->MajorantValues.size(), 0);
+  for (std::size_t c = 0; c < occupied.size(); ++c)
+  {
+    occupied[c] = this->MajorantValues[c] > 0.0f ? 1 : 0;
+  }
   this->EmptyCellFraction = avs::EmptyFraction(occupied);
   for (unsigned char& o : occupied)
   {

@@ -148,6 +148,11 @@ public:
   avs::ValueRangeGrid ValueRanges;
   vtkSmartPointer<vtkTextureObject> Occupancy;
   double EmptyCellFraction = 0.0;
+  /// The cells' majorants of sigma_t (avs::Majorants), from which the occupancy is taken, kept
+  /// for the path-traced refinement (vtkAVSRefinement uploads them when MajorantsVersion
+  /// changes).
+  std::vector<float> MajorantValues;
+  int MajorantsVersion = 0;
   /// The voxels (texels of the bricks, ghost layers included) the last UploadScalars wrote.
   double UploadedVoxels = 0.0;
   /// What Occupancy was built from: the ranges (counted at each UploadScalars) and the opacity

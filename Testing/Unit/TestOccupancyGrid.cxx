@@ -229,3 +229,49 @@ TEST(OccupancyGrid, MaterialInACornerLeavesTheRestEmpty)
   scene.Transfer = TransferFunction::Constant(0.2, { 1, 1, 1 });
   EXPECT_DOUBLE_EQ(EmptyFraction(Occupancy(ranges, Classifier(scene))), 0.0);
 }
+
+TEST(OccupancyGrid, MajorantsBoundEverySampleOfTheirCellAndGiveTheOccupancy)
+{
+  // The GPU path tracer's majorants: no sample its walk can take in a cell (the cell's owned
+  // indices and half a voxel past them) has more extinction than the cell's majorant, and the
+  // occupancy is where the majorant is above 0.
+  Random random(11);
+  const std::array<int, 3> d{ 23, 18, 20 };
+  VolumeScene scene;
+  scene.Scalars = Field(d, [&](int, int, int) { return random.Uniform(); });
+  scene.UnitDistance = 0.7;
+  for (const double centre : { 0.2, 0.5, 0.85 })
+  {
+    scene.Transfer = Band(centre, 0.05);
+    const ValueRangeGrid ranges = RangesOf(scene, 4);
+    const Classifier classifier(scene);
+    const std::vector<float> majorants = Majorants(ranges, classifier);
+    const std::vector<unsigned char> occupied = Occupancy(ranges, classifier);
+    ASSERT_EQ(majorants.size(), occupied.size());
+    const auto& cells = ranges.Cells();
+    const double B = ranges.CellSize();
+    int positive = 0;
+    for (int ck = 0; ck < cells[2]; ++ck)
+      for (int cj = 0; cj < cells[1]; ++cj)
+        for (int ci = 0; ci < cells[0]; ++ci)
+        {
+          const std::size_t id = (static_cast<std::size_t>(ck) * cells[1] + cj) * cells[0] + ci;
+          EXPECT_EQ(occupied[id] != 0, majorants[id] > 0.0f);
+          positive += majorants[id] > 0.0f ? 1 : 0;
+          const int c[3] = { ci, cj, ck };
+          for (int s = 0; s < 50; ++s)
+          {
+            Vec3 p;
+            for (int a = 0; a < 3; ++a)
+            {
+              const double lo = std::max(0.0, c[a] * B - 0.5);
+              const double hi = std::min(d[a] - 1.0, (c[a] + 1) * B + 0.5);
+              p[a] = lo + (hi - lo) * random.Uniform();
+            }
+            EXPECT_LE(classifier.AtIndex(p).SigmaT, majorants[id])
+              << "cell (" << ci << ", " << cj << ", " << ck << ")";
+          }
+        }
+    EXPECT_GT(positive, 0);
+  }
+}

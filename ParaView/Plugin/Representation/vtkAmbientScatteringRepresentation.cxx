@@ -157,6 +157,31 @@ int vtkAmbientScatteringRepresentation::GetScatteringModel()
   return this->AmbientScatteringMapper->GetScatteringModel();
 }
 
+void vtkAmbientScatteringRepresentation::SetPathTracedRefinement(int on)
+{
+  this->AmbientScatteringMapper->SetPathTracedRefinement(on != 0);
+}
+
+int vtkAmbientScatteringRepresentation::GetPathTracedRefinement()
+{
+  return this->AmbientScatteringMapper->GetPathTracedRefinement() ? 1 : 0;
+}
+
+void vtkAmbientScatteringRepresentation::SetMaximumSamplesPerPixel(int samples)
+{
+  this->AmbientScatteringMapper->SetMaximumSamplesPerPixel(samples);
+}
+
+int vtkAmbientScatteringRepresentation::GetMaximumSamplesPerPixel()
+{
+  return this->AmbientScatteringMapper->GetMaximumSamplesPerPixel();
+}
+
+int vtkAmbientScatteringRepresentation::GetSamplesPerPixel()
+{
+  return this->AmbientScatteringMapper->GetSamplesPerPixel();
+}
+
 void vtkAmbientScatteringRepresentation::SetDiffusionVolumeMaximumDimension(int dimension)
 {
   this->AmbientScatteringMapper->SetDiffusionVolumeMaximumDimension(dimension);
@@ -271,6 +296,9 @@ void vtkAmbientScatteringRepresentation::PrintSelf(ostream& os, vtkIndent indent
   os << indent << "ScatteringModel: " << this->GetScatteringModel() << "\n";
   os << indent << "DiffusionVolumeMaximumDimension: " << this->GetDiffusionVolumeMaximumDimension()
      << "\n";
+  os << indent << "PathTracedRefinement: " << (this->GetPathTracedRefinement() ? "On" : "Off")
+     << "\n";
+  os << indent << "MaximumSamplesPerPixel: " << this->GetMaximumSamplesPerPixel() << "\n";
   os << indent << "SampleDistance: " << this->GetSampleDistance() << "\n";
   os << indent << "UseJittering: " << this->GetUseJittering() << "\n";
   os << indent << "MaximumGPUMemory: " << this->GetMaximumGPUMemory() << " MiB\n";

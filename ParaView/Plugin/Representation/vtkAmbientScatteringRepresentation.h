@@ -135,6 +135,20 @@ public:
 
   ///@{
   /**
+   * Path-traced refinement (vtkAmbientScatteringVolumeMapper::SetPathTracedRefinement): while
+   * the view rests, every still render adds a path-traced sample per pixel, up to
+   * MaximumSamplesPerPixel, and the picture converges to the path tracer's. Off by default.
+   */
+  void SetPathTracedRefinement(int on);
+  int GetPathTracedRefinement();
+  void SetMaximumSamplesPerPixel(int samples);
+  int GetMaximumSamplesPerPixel();
+  /// Samples per pixel of the ambient-scattering mapper's refinement so far.
+  int GetSamplesPerPixel();
+  ///@}
+
+  ///@{
+  /**
    * Largest dimension per axis (2 to 1024) of the extended model's diffusion grid
    * (vtkAmbientScatteringVolumeMapper::SetDiffusionVolumeMaximumDimension). Default 64.
    */
