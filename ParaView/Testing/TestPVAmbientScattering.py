@@ -126,6 +126,30 @@ def main(plugin, out):
                  "a coarser diffusion grid renders another picture (%.1f dB)"
                  % t.psnr(base, coarse))
     display.DiffusionVolumeMaximumDimension = 64
+    # The path-traced refinement: every still render adds a sample, up to the maximum, and the
+    # picture moves away from ambient scattering; a camera move restarts it.
+    display.PathTracedRefinement = 1
+    display.MaximumSamplesPerPixel = 12
+    samples = []
+    for _ in range(16):
+        pv.Render(view)
+        display.UpdatePropertyInformation()
+        samples.append(display.GetPropertyValue("SamplesPerPixelInfo"))
+    checks.check(samples[:12] == list(range(1, 13)) and samples[12:] == [12] * 4,
+                 "each still render adds a sample up to MaximumSamplesPerPixel (%s)" % samples)
+    checks.check(mapper is not None and "PathTracedRefinement: On" in str(mapper),
+                 "PathTracedRefinement reaches the mapper")
+    refined = render("pv_ambient_scattering_refined")
+    checks.check(t.psnr(base, refined) < 60.0 and t.lit_fraction(refined) > 0.15,
+                 "the refined picture is another picture (%.1f dB)" % t.psnr(base, refined))
+    view.CameraPosition = [p * 1.01 for p in view.CameraPosition]
+    pv.Render(view)
+    display.UpdatePropertyInformation()
+    checks.check(display.GetPropertyValue("SamplesPerPixelInfo") == 1, "a camera move restarts")
+    view.CameraPosition = [p / 1.01 for p in view.CameraPosition]
+    display.PathTracedRefinement = 0
+    checks.check(t.psnr(base, render("pv_ambient_scattering_unrefined")) > 50.0,
+                 "off again, the ambient-scattering picture")
 
     # --- The VTK side: the same scene with ParaView's VTK and the plugin's mapper class.
     source = vtkRTAnalyticSource()
