@@ -187,17 +187,6 @@ void PlaceCamera(vtkCamera* camera)
   camera->SetClippingRange(1.0, 10.0);
 }
 
-// RGB in [0, 1], row 0 at the bottom, as doubles.
-std::vector<double> Pixels(vtkImageData* image)
-{
-  vtkDataArray* s = image->GetPointData()->GetScalars();
-  std::vector<double> out(3 * s->GetNumberOfTuples());
-  for (vtkIdType i = 0; i < s->GetNumberOfTuples(); ++i)
-    for (int c = 0; c < 3; ++c)
-      out[3 * i + c] = s->GetComponent(i, c) / 255.0;
-  return out;
-}
-
 double Sum(const std::vector<double>& values)
 {
   double sum = 0.0;
@@ -206,21 +195,6 @@ double Sum(const std::vector<double>& values)
     sum += v;
   }
   return sum;
-}
-
-vtkSmartPointer<vtkImageData> ToPicture(const std::vector<double>& rgb,
-  int size,
-  double scale = 1.0)
-{
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(size, size, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
-  for (std::size_t i = 0; i < rgb.size(); ++i)
-  {
-    p[i] = static_cast<unsigned char>(std::lround(255.0 * std::clamp(rgb[i] * scale, 0.0, 1.0)));
-  }
-  return image;
 }
 
 // EA, AO, the paper's ambient scattering, the extended model.
@@ -232,33 +206,19 @@ AccuracyResult Measured(const std::string& scene,
   const std::vector<double>& reference,
   double noise)
 {
-  double se = 0.0, l1 = 0.0, norm = 0.0;
+  double l1 = 0.0, norm = 0.0;
   for (std::size_t i = 0; i < reference.size(); ++i)
   {
-    const double d = picture[i] - reference[i];
-    se += d * d;
-    l1 += std::abs(d);
+    l1 += std::abs(picture[i] - reference[i]);
     norm += std::abs(reference[i]);
   }
   AccuracyResult r;
   r.Scene = scene;
   r.Model = model;
-  r.Rmse = std::sqrt(se / reference.size());
+  r.Rmse = AccuracyRmse(picture, reference);
   r.RelativeL1 = norm > 0 ? l1 / norm : 0.0;
   r.TruthNoise = noise;
   return r;
-}
-
-// RGB of a float image clamped into [0, 1], row 0 at the bottom.
-std::vector<double> Clamped(const avs::Image& image)
-{
-  std::vector<double> out(3 * static_cast<std::size_t>(image.Width) * image.Height);
-  for (int y = 0; y < image.Height; ++y)
-    for (int x = 0; x < image.Width; ++x)
-      for (int c = 0; c < 3; ++c)
-        out[3 * (static_cast<std::size_t>(y) * image.Width + x) + c] =
-          std::clamp(static_cast<double>(image.At(x, y)[c]), 0.0, 1.0);
-  return out;
 }
 
 // A path-traced picture, from the settings' cache folder when it holds it (same scene, sizes,
@@ -292,7 +252,7 @@ std::vector<double> TruthPicture(const AccuracySettings& s,
       return cached;
     }
   }
-  std::vector<double> picture = Clamped(render());
+  std::vector<double> picture = ClampedRgb(render());
   if (!file.empty())
   {
     std::ofstream out(file, std::ios::binary);
@@ -301,35 +261,186 @@ std::vector<double> TruthPicture(const AccuracySettings& s,
   }
   return picture;
 }
+
+// The path tracer's settings of the study's truth for `seed`.
+avs::PathTracerSettings TruthSettings(const AccuracySettings& settings, std::uint64_t seed)
+{
+  avs::PathTracerSettings pts;
+  pts.SamplesPerPixel = settings.SamplesPerPixel;
+  pts.Seed = seed;
+  return pts;
+}
 } // namespace
 
-bool RunAccuracyStudy(const AccuracySettings& settings,
-  std::vector<AccuracyResult>& results,
-  double* pathTracerNoise)
+bool CheckAccuracySettings(const AccuracySettings& settings, const char* program)
 {
   std::vector<std::string> known = AccuracySettings().Scenes;
   known.push_back("plume_point"); // not in the default list
   if (settings.Scenes.empty())
   {
-    std::fprintf(stderr, "avs-accuracy: no scenes to render\n");
+    std::fprintf(stderr, "%s: no scenes to render\n", program);
     return false;
   }
   for (const std::string& name : settings.Scenes)
   {
     if (std::find(known.begin(), known.end(), name) == known.end())
     {
-      std::fprintf(stderr, "avs-accuracy: unknown scene '%s'\n", name.c_str());
+      std::fprintf(stderr, "%s: unknown scene '%s'\n", program, name.c_str());
       return false;
     }
   }
   if (!(settings.CloudOpacity > 0.0 && settings.CloudOpacity <= 1.0))
   {
-    std::fprintf(stderr, "avs-accuracy: the cloud opacity must be in (0, 1]\n");
+    std::fprintf(stderr, "%s: the cloud opacity must be in (0, 1]\n", program);
     return false;
   }
   if (!(settings.AmbientRadius >= 0.0 && std::isfinite(settings.AmbientRadius)))
   {
-    std::fprintf(stderr, "avs-accuracy: the ambient radius must be finite and >= 0\n");
+    std::fprintf(stderr, "%s: the ambient radius must be finite and >= 0\n", program);
+    return false;
+  }
+  return true;
+}
+
+AccuracyScene SetUpAccuracyScene(const AccuracySettings& settings,
+  const std::string& name,
+  vtkRenderer* renderer)
+{
+  StudyScene scene = MakeScene(name, settings.Voxels, settings.CloudOpacity);
+  AccuracyScene out;
+  out.Name = name;
+  out.Data = ToImageData(scene.Density);
+  out.Property = scene.Property;
+  out.Albedo = scene.Albedo;
+  out.Anisotropy = scene.Anisotropy;
+  for (const auto& l : scene.Lights)
+  {
+    renderer->AddLight(l);
+  }
+  PlaceCamera(renderer->GetActiveCamera());
+
+  // The path tracer's scene.
+  std::string error, warning;
+  vtkAVSDataTranslator::Volume volume;
+  vtkAVSDataTranslator::ToVolume(out.Data, {}, volume, error, warning);
+  out.Core.Scalars = std::move(volume.Components.at(0));
+  vtkAVSPropertyTranslator::ToMedium(
+    scene.Property, { { 0.0, 1.0 } }, VTK_FLOAT, false, out.Core, error, warning);
+  out.Core.Lights = vtkAVSSceneTranslator::ToLights(renderer, renderer->GetActiveCamera());
+  avs::ScatteringParameters p;
+  p.AmbientRadius = settings.AmbientRadius;
+  p.Albedo = scene.Albedo;
+  p.Anisotropy = scene.Anisotropy;
+  out.Parameters = p.Resolve(out.Core.Scalars.Geometry);
+  out.Camera = vtkAVSSceneTranslator::ToCamera(renderer->GetActiveCamera());
+  return out;
+}
+
+void ConfigureAccuracyMapper(vtkAmbientScatteringVolumeMapper* mapper,
+  const AccuracyScene& scene,
+  const AccuracySettings& settings)
+{
+  mapper->SetAmbientRadius(settings.AmbientRadius);
+  mapper->SetAlbedo(scene.Albedo);
+  mapper->SetAnisotropy(scene.Anisotropy);
+  mapper->UseJitteringOff();
+  // The truth is linear: the lit mappers are measured on their radiance (exposure 1, no tone
+  // curve), as EA and AO are.
+  mapper->SetExposure(1.0);
+  mapper->SetToneMappingToClamp();
+}
+
+std::vector<double> AccuracyTruth(const AccuracySettings& settings,
+  const AccuracyScene& scene,
+  double* noise)
+{
+  // The path tracer, twice with different seeds to measure its own noise.
+  const int size = settings.ImageSize;
+  std::vector<double> truth[2];
+  for (int run = 0; run < 2; ++run)
+  {
+    const avs::PathTracerSettings pts = TruthSettings(settings, 17 + run);
+    truth[run] = TruthPicture(settings,
+      scene.Name,
+      run,
+      [&]() {
+        return avs::RenderPathTraced(scene.Core, scene.Parameters, pts, scene.Camera, size, size);
+      });
+  }
+  // Noise of the mean of both runs: the RMSE between them / 2.
+  double se = 0.0;
+  std::vector<double> reference(truth[0].size());
+  for (std::size_t i = 0; i < reference.size(); ++i)
+  {
+    reference[i] = 0.5 * (truth[0][i] + truth[1][i]);
+    se += (truth[0][i] - truth[1][i]) * (truth[0][i] - truth[1][i]);
+  }
+  if (noise)
+  {
+    *noise = std::sqrt(se / reference.size()) / 2.0;
+  }
+  return reference;
+}
+
+std::vector<double> AccuracyGrab(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->ShouldRerenderOff();
+  grab->Update();
+  vtkDataArray* s = grab->GetOutput()->GetPointData()->GetScalars();
+  std::vector<double> out(3 * s->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < s->GetNumberOfTuples(); ++i)
+    for (int c = 0; c < 3; ++c)
+      out[3 * i + c] = s->GetComponent(i, c) / 255.0;
+  return out;
+}
+
+std::vector<double> ClampedRgb(const avs::Image& image)
+{
+  std::vector<double> out(3 * static_cast<std::size_t>(image.Width) * image.Height);
+  for (int y = 0; y < image.Height; ++y)
+    for (int x = 0; x < image.Width; ++x)
+      for (int c = 0; c < 3; ++c)
+        out[3 * (static_cast<std::size_t>(y) * image.Width + x) + c] =
+          std::clamp(static_cast<double>(image.At(x, y)[c]), 0.0, 1.0);
+  return out;
+}
+
+double AccuracyRmse(const std::vector<double>& picture, const std::vector<double>& reference)
+{
+  double se = 0.0;
+  for (std::size_t i = 0; i < reference.size(); ++i)
+  {
+    const double d = picture[i] - reference[i];
+    se += d * d;
+  }
+  return std::sqrt(se / reference.size());
+}
+
+vtkSmartPointer<vtkImageData> AccuracyPicture(const std::vector<double>& rgb,
+  int size,
+  double scale)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(size, size, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (std::size_t i = 0; i < rgb.size(); ++i)
+  {
+    p[i] = static_cast<unsigned char>(std::lround(255.0 * std::clamp(rgb[i] * scale, 0.0, 1.0)));
+  }
+  return image;
+}
+
+bool RunAccuracyStudy(const AccuracySettings& settings,
+  std::vector<AccuracyResult>& results,
+  double* pathTracerNoise)
+{
+  if (!CheckAccuracySettings(settings, "avs-accuracy"))
+  {
     return false;
   }
   const int size = settings.ImageSize;
@@ -338,9 +449,6 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
   double worstNoise = 0.0;
   for (const std::string& name : settings.Scenes)
   {
-    StudyScene scene = MakeScene(name, settings.Voxels, settings.CloudOpacity);
-    auto data = ToImageData(scene.Density);
-
     vtkNew<vtkRenderWindow> window;
     window->SetSize(size, size);
     window->SetMultiSamples(0);
@@ -348,52 +456,17 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
     vtkNew<vtkRenderer> renderer;
     renderer->SetBackground(0, 0, 0);
     window->AddRenderer(renderer);
-    for (const auto& l : scene.Lights)
-    {
-      renderer->AddLight(l);
-    }
-    PlaceCamera(renderer->GetActiveCamera());
+    const AccuracyScene scene = SetUpAccuracyScene(settings, name, renderer);
+    const auto& data = scene.Data;
 
-    // The path tracer (truth), twice with different seeds to measure its own noise.
-    avs::VolumeScene core;
-    std::string error, warning;
-    vtkAVSDataTranslator::Volume volume;
-    vtkAVSDataTranslator::ToVolume(data, {}, volume, error, warning);
-    core.Scalars = std::move(volume.Components.at(0));
-    vtkAVSPropertyTranslator::ToMedium(
-      scene.Property, { { 0.0, 1.0 } }, VTK_FLOAT, false, core, error, warning);
-    core.Lights = vtkAVSSceneTranslator::ToLights(renderer, renderer->GetActiveCamera());
-    avs::ScatteringParameters p;
-    p.AmbientRadius = settings.AmbientRadius;
-    p.Albedo = scene.Albedo;
-    p.Anisotropy = scene.Anisotropy;
-    const avs::ScatteringParameters rp = p.Resolve(core.Scalars.Geometry);
-    avs::PathTracerSettings pts;
-    pts.SamplesPerPixel = settings.SamplesPerPixel;
-    std::vector<double> truth[2];
-    const avs::Camera camera = vtkAVSSceneTranslator::ToCamera(renderer->GetActiveCamera());
-    for (int run = 0; run < 2; ++run)
-    {
-      pts.Seed = 17 + run;
-      truth[run] = TruthPicture(settings,
-        name,
-        run,
-        [&]() { return avs::RenderPathTraced(core, rp, pts, camera, size, size); });
-    }
-    // Noise of the mean of both runs: the RMSE between them / 2.
+    // The path tracer (truth).
     double noise = 0.0;
-    std::vector<double> reference(truth[0].size());
-    for (std::size_t i = 0; i < reference.size(); ++i)
-    {
-      reference[i] = 0.5 * (truth[0][i] + truth[1][i]);
-      noise += (truth[0][i] - truth[1][i]) * (truth[0][i] - truth[1][i]);
-    }
-    noise = std::sqrt(noise / reference.size()) / 2.0;
+    const std::vector<double> reference = AccuracyTruth(settings, scene, &noise);
     worstNoise = std::max(worstNoise, noise);
 
     // The mappers; EA and AO get k = albedo * sum of irradiances at the centre / 4 pi.
     double k = 0.0;
-    for (const avs::Light& l : core.Lights)
+    for (const avs::Light& l : scene.Core.Lights)
     {
       const avs::Vec3 e = l.FreeIrradiance({ 0, 0, 0 });
       k += scene.Albedo * (e.x + e.y + e.z) / 3.0 / (4.0 * avs::Pi);
@@ -404,21 +477,10 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
     as->SetScatteringModelToPaper();
     ao->SetAmbientWeight(k);
     ao->SetOcclusionRadius(settings.AmbientRadius);
-    as->SetAmbientRadius(settings.AmbientRadius);
-    as->SetAlbedo(scene.Albedo);
-    as->SetAnisotropy(scene.Anisotropy);
+    ConfigureAccuracyMapper(as, scene, settings);
     vtkNew<vtkAmbientScatteringVolumeMapper> asx; // the extended model
-    asx->SetAmbientRadius(settings.AmbientRadius);
-    asx->SetAlbedo(scene.Albedo);
-    asx->SetAnisotropy(scene.Anisotropy);
+    ConfigureAccuracyMapper(asx, scene, settings);
     asx->SetScatteringModelToExtended();
-    // The truth is linear: the lit mappers are measured on their radiance (exposure 1, no tone
-    // curve), as EA and AO are.
-    for (vtkAmbientScatteringVolumeMapper* lit : { as.Get(), asx.Get() })
-    {
-      lit->SetExposure(1.0);
-      lit->SetToneMappingToClamp();
-    }
 
     // EA's colours scaled by k (clamped at 1 by the transfer function).
     vtkNew<vtkVolumeProperty> eaProperty;
@@ -449,12 +511,7 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
         m == 0 ? static_cast<vtkVolumeProperty*>(eaProperty) : scene.Property.Get());
       renderer->AddVolume(volume);
       window->Render();
-      vtkNew<vtkWindowToImageFilter> grab;
-      grab->SetInput(window);
-      grab->SetInputBufferTypeToRGB();
-      grab->ReadFrontBufferOff();
-      grab->ShouldRerenderOff();
-      grab->Update();
+      pictures[m] = AccuracyGrab(window);
       renderer->RemoveVolume(volume);
       if (mappers[m]->GetNumberOfRenderedFrames() != 1)
       {
@@ -464,7 +521,6 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
           name.c_str());
         return false;
       }
-      pictures[m] = Pixels(grab->GetOutput());
       results.push_back(Measured(name, models[m], pictures[m], reference, noise));
     }
     for (int m = 0; m < Models; ++m)
@@ -476,13 +532,15 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
     {
       // Where the light comes from: the truth's single-scattered share (one bounce, same seed),
       // and each model's mean radiance against the truth's (below 1: too dark on average).
-      avs::PathTracerSettings single = pts;
-      single.Seed = 17;
+      avs::PathTracerSettings single = TruthSettings(settings, 17);
       single.MaximumBounces = 1;
       const std::vector<double> once = TruthPicture(settings,
         name,
         2,
-        [&]() { return avs::RenderPathTraced(core, rp, single, camera, size, size); });
+        [&]() {
+          return avs::RenderPathTraced(
+            scene.Core, scene.Parameters, single, scene.Camera, size, size);
+        });
       const double truthSum = Sum(reference);
       std::fprintf(stderr,
         "[avs-accuracy] %s: k = %.3f, path-tracer noise (RMSE) %.4f, single scattering %.0f %% "
@@ -500,10 +558,10 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
     {
       vtkNew<vtkImageAppend> row;
       row->SetAppendAxis(0);
-      row->AddInputData(ToPicture(reference, size));
+      row->AddInputData(AccuracyPicture(reference, size));
       for (int m = 0; m < Models; ++m)
       {
-        row->AddInputData(ToPicture(pictures[m], size));
+        row->AddInputData(AccuracyPicture(pictures[m], size));
       }
       for (int m = 0; m < Models; ++m)
       {
@@ -512,7 +570,7 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
         {
           diff[i] = std::abs(pictures[m][i] - reference[i]);
         }
-        row->AddInputData(ToPicture(diff, size, 4.0));
+        row->AddInputData(AccuracyPicture(diff, size, 4.0));
       }
       row->Update();
       vtkNew<vtkImageData> copy;

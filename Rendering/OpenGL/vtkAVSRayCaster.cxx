@@ -497,16 +497,29 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   // Ambient scattering's path-traced refinement: its buffers restart when the key or the size
   // changes, at every frame, so that a reduced frame after a change adds nothing to old samples.
   this->LastRefined = false;
-  const bool refine = frame.Refinement.Enabled &&
-    frame.Mode == avs::RenderMode::AmbientScattering && !bricked && !frame.PeelingFront;
+  bool refine = frame.Refinement.Enabled && frame.Mode == avs::RenderMode::AmbientScattering &&
+    !bricked && !frame.PeelingFront;
+  if (refine &&
+    !this->Refinement.Begin(
+      window, width, height, frame.Refinement.Key, frame.Refinement.Geometry, error))
+  {
+    // (Float buffers of the viewport's size refused: the frame is drawn unrefined; one
+    // warning until a refinement starts again.)
+    if (!this->RefinementRefused)
+    {
+      vtkGenericWarningMacro("Path-traced refinement is not done: " << error << ".");
+    }
+    this->RefinementRefused = true;
+    error.clear();
+    refine = false;
+  }
+  else if (refine)
+  {
+    this->RefinementRefused = false;
+  }
   if (!refine)
   {
     this->Refinement.Reset(); // the samples were of another frame
-  }
-  else if (!this->Refinement.Begin(
-             window, width, height, frame.Refinement.Key, frame.Refinement.Geometry, error))
-  {
-    return false;
   }
 
   // The render passes attached to the volume set what they need (vtkSSAOPass: the colour

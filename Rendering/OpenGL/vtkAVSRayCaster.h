@@ -267,6 +267,7 @@ private:
   vtkAVSImageSampler ImageSampler; ///< the pass at image sample distances other than 1
   vtkAVSRefinement Refinement;     ///< ambient scattering's path-traced refinement
   bool LastRefined = false;
+  bool RefinementRefused = false; ///< warned that the refinement's buffers were refused
   std::array<int, 2> LastPassSize{ 0, 0 };
 };
 

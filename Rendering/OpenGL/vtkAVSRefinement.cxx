@@ -243,6 +243,29 @@ bool vtkAVSRefinement::Begin(vtkOpenGLRenderWindow* window,
 
 void vtkAVSRefinement::Reset()
 {
+  // The float buffers (48 bytes a pixel) are not kept for a volume that is not refined; the
+  // programs and the majorants are.
+  vtkOpenGLRenderWindow* window = this->Window;
+  if (window)
+  {
+    for (vtkTextureObject* t : { this->Sum.Get(), this->SumSquares.Get(), this->Ambient.Get() })
+    {
+      if (t)
+      {
+        t->ReleaseGraphicsResources(window);
+      }
+    }
+    for (vtkOpenGLFramebufferObject* f : { this->Accumulation.Get(), this->AmbientTarget.Get() })
+    {
+      if (f)
+      {
+        f->ReleaseGraphicsResources(window);
+      }
+    }
+  }
+  this->Sum = this->SumSquares = this->Ambient = nullptr;
+  this->Accumulation = this->AmbientTarget = nullptr;
+  this->Width = this->Height = 0;
   this->Key.clear();
   this->Geometry.clear();
   this->Samples = 0;

@@ -67,8 +67,8 @@ public:
   /// of the bound framebuffer with the caller's blending.
   bool Show(int x, int y, int width, int height, const avs::DisplayTransform& display);
 
-  /// Forgets the samples and the ambient picture (a frame that is not refined); the buffers
-  /// stay for the next refined frame, which restarts.
+  /// Forgets the samples and the ambient picture and frees the buffers (a frame that is not
+  /// refined); the next refined frame restarts.
   void Reset();
   /// Samples per pixel taken since the last restart.
   int GetSamples() const { return this->Samples; }

@@ -241,25 +241,39 @@ def z_test(name, gpu, n_gpu, cpu, n_cpu, alpha=0.01):
 
 
 def blend(a, m, m2, n, radius=2):
-    """Rendering/Core/Refinement.h: A + w (M - A)."""
-    if n < 4:
+    """Rendering/Core/Refinement.h: A + w_s r_s + w_d (r - r_s), r = M - A."""
+    if n < 16:
         return a.copy()
     h, w, _ = a.shape
-    d2 = ((m - a) ** 2).sum(-1)
-    v = (np.maximum(m2 - m * m, 0) / (n - 1)).sum(-1)
-    dp = np.pad(d2, radius, mode="edge")
-    vp = np.pad(v, radius, mode="edge")
-    D = np.zeros_like(d2)
-    V = np.zeros_like(v)
-    for dy in range(-radius, radius + 1):
-        for dx in range(-radius, radius + 1):
-            D += dp[radius + dy:radius + dy + h, radius + dx:radius + dx + w]
-            V += vp[radius + dy:radius + dy + h, radius + dx:radius + dx + w]
-    D /= (2 * radius + 1) ** 2
-    V /= (2 * radius + 1) ** 2
-    b2 = np.maximum(D - 2 * V, 0)
-    weight = np.where(b2 + V > 0, b2 / np.maximum(b2 + V, 1e-30), 1.0)
-    return a + weight[..., None] * (m - a)
+    r = m - a
+    # The samples' variance, at least that of hits and misses as likely as A says.
+    hit = np.clip(a[..., 3:4], 0, 1)
+    least = np.concatenate([a[..., :3] ** 2 * (1 - hit) / np.maximum(hit, 1e-30),
+                            hit * (1 - hit)], axis=-1) / n
+    least = np.where(hit > 0, least, 0.0)
+    v = np.maximum(np.maximum(m2 - m * m, 0) / (n - 1), least).sum(-1)
+
+    def window_mean(x):
+        pad = [(radius, radius), (radius, radius)] + [(0, 0)] * (x.ndim - 2)
+        xp = np.pad(x, pad, mode="edge")
+        out = np.zeros_like(x)
+        for dy in range(-radius, radius + 1):
+            for dx in range(-radius, radius + 1):
+                out += xp[radius + dy:radius + dy + h, radius + dx:radius + dx + w]
+        return out / (2 * radius + 1) ** 2
+
+    count = (2 * radius + 1) ** 2
+    residual = window_mean(r)
+    smooth = (residual ** 2).sum(-1)
+    vbar = window_mean(v)
+    smooth_bias2 = np.maximum(smooth - 2 * vbar / count, 0)
+    smooth_weight = np.where(smooth_bias2 + vbar / count > 0,
+                             smooth_bias2 / np.maximum(smooth_bias2 + vbar / count, 1e-30), 1.0)
+    detail_bias2 = np.maximum(window_mean((r ** 2).sum(-1)) - smooth - 2 * vbar, 0)
+    noise = np.maximum(vbar, v)
+    detail_weight = np.where(detail_bias2 + noise > 0,
+                             detail_bias2 / np.maximum(detail_bias2 + noise, 1e-30), 1.0)
+    return a + smooth_weight[..., None] * residual + detail_weight[..., None] * (r - residual)
 
 
 def framebuffer(window, size, depth=False):
@@ -353,6 +367,10 @@ def main():
     mapper.SetImageSampleDistance(2.0)
     check(samples_after(lambda: None) == 9, "image sample distance 2 adds nothing")
     mapper.SetImageSampleDistance(1.0)
+    # The majorants do not depend on empty-space skipping.
+    mapper.SetEmptySpaceSkipping(False)
+    check(samples_after(lambda: None) == 10, "refines without empty-space skipping")
+    mapper.SetEmptySpaceSkipping(True)
     mapper.SetMaximumSamplesPerPixel(12)
     for _ in range(10):
         window.Render()
