@@ -59,7 +59,7 @@ public:
   /**
    * Scattering albedo in [0, 1]. Default 0.8 (the swap test shows why: with 0.9 the extended
    * model's diffuse light flattens the shading of dense media, at 0.8 they keep 0.7 or more of
-   * the paper model's structure; README, "Display").
+   * the paper model's structure; Documentation/Parameters.md, "Display transform").
    */
   vtkSetClampMacro(Albedo, double, 0.0, 1.0);
   vtkGetMacro(Albedo, double);
@@ -113,8 +113,8 @@ public:
    * The model of ambient scattering. ExtendedModel (1, the default): the paper's model plus
    * long-range multiple scattering, the diffuse fluence of a diffusion solve on a coarse grid
    * sourced by the light the tubes deliver (ARCHITECTURE.md, "Beyond the paper"); closer to the
-   * path tracer than the paper's model on every scene of the accuracy study (README, "Accuracy
-   * against the truth"), brighter in thick clouds lit from the side, the same in optically thin
+   * path tracer than the paper's model on every scene of the accuracy study (Documentation/
+   * Accuracy.md), brighter in thick clouds lit from the side, the same in optically thin
    * media. Its fluence comes with the averaged extinction in one texture fetch per sample (with 4
    * or 8 lights no fetch beyond the paper's model's, with 1-3 or 5-7 one), and it costs the solve
    * at each light-volume rebuild. PaperModel (0): Ament et al. 2013 as this project implements it

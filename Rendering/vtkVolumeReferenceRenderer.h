@@ -213,8 +213,8 @@ public:
    * The model of ambient scattering. ExtendedModel (1, the default): the paper's model plus
    * long-range multiple scattering, the diffuse fluence of a diffusion solve on a coarse grid
    * sourced by the light the tubes deliver (ARCHITECTURE.md, "Beyond the paper"); closer to the
-   * path tracer than the paper's model on every scene of the accuracy study (README, "Accuracy
-   * against the truth"), brighter in thick clouds lit from the side, the same in optically thin
+   * path tracer than the paper's model on every scene of the accuracy study (Documentation/
+   * Accuracy.md), brighter in thick clouds lit from the side, the same in optically thin
    * media. Its fluence comes with the averaged extinction in one texture fetch per sample (with 4
    * or 8 lights no fetch beyond the paper's model's, with 1-3 or 5-7 one), and it costs the solve
    * at each light-volume rebuild. PaperModel (0): Ament et al. 2013 as this project implements it

@@ -288,7 +288,7 @@ int main(int argc, char* argv[])
   vtkNew<vtkAmbientScatteringVolumeMapper> asx4; // the extended model (the default)
   asx4->SetScatteringModelToExtended();
   asx1->SetScatteringModelToExtended();
-  as1->SetScatteringModelToPaper(); // the paper's model, as issue 16's targets were set
+  as1->SetScatteringModelToPaper(); // the paper's model, which the frame targets are set for
   as4->SetScatteringModelToPaper();
   if (lightGrid > 0)
   {

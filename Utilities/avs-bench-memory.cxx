@@ -1,5 +1,5 @@
 // avs-bench-memory: what the mappers take in memory, side by side with VTK's
-// vtkGPUVolumeRayCastMapper (issue 16, item 3). Lines:
+// vtkGPUVolumeRayCastMapper. Lines:
 //
 //   memory <mapper> <type> gpu_bytes_per_voxel <B> (peak <B>) peak_above_baseline <MiB>
 //     first_frame <s> rebuild_opacity <s> (cpu <s>) frame <s> frame_cpu <s>
@@ -28,7 +28,7 @@
 // asx4 the extended one (the default) with 4 lights. --mappers vtk_ea,ea,ao,as1,as4,asx4 (any of
 // them) runs only those, without the targets.
 //
-// Targets (issue 16): ours EA <= 1.1x VTK's bytes per voxel and peak above baseline; ambient
+// Targets: ours EA <= 1.1x VTK's bytes per voxel and peak above baseline; ambient
 // scattering with 4 lights <= 2.5x VTK's (EA) in both; the 8-bit volume renders with ambient
 // scattering within 1 GB (meant at --voxels 512).
 #include "BenchScene.h"
@@ -171,7 +171,7 @@ Result RunOne(const std::string& mapperName, vtkImageData* volume, int size, int
       m = vtkSmartPointer<vtkAmbientOcclusionVolumeMapper>::New();
     else
     {
-      // as1, as4: the paper's model, as issue 16's targets were set; asx4 the extended one (the
+      // as1, as4: the paper's model, which the targets are set for; asx4 the extended one (the
       // default), which adds its fluence on the light grid and the diffusion grids.
       auto scattering = vtkSmartPointer<vtkAmbientScatteringVolumeMapper>::New();
       if (mapperName != "asx4")

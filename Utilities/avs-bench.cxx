@@ -4,7 +4,7 @@
 //
 // Summed-area-table averaging at 128^3 and 256^3, light-volume tube marching for one
 // directional and one point light, and scattering-table lookups. Timings are medians of several
-// runs of the same work. The GPU figures come with the mappers (see README.md).
+// runs of the same work. The GPU figures come with the mappers (Documentation/Performance.md).
 #include "AveragedExtinction.h"
 #include "LightVolume.h"
 #include "Parallel.h"

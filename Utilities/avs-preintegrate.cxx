@@ -3,7 +3,7 @@
 //   avs-preintegrate [options] OUTPUT.avst
 //
 // Run with --help for the options. The shipped table Data/scattering_table.avst was made with
-// the defaults (see README.md for the command and how long it took).
+// the defaults (Documentation/ScatteringTable.md has the command and how long it took).
 #include "Parallel.h"
 #include "Preintegrator.h"
 #include "ScatteringTable.h"

@@ -1,7 +1,7 @@
-"""The README's pvbatch snippet: a volume with the "Ambient Scattering" representation, off screen.
+"""A volume with the "Ambient Scattering" representation, off screen.
 
 usage: pvbatch --force-offscreen-rendering ambient_scattering_pvbatch.py PLUGIN OUTPUT.png
-(PLUGIN: the path ./avs paraview prints; ParaView's Python on PYTHONPATH, see the README)
+(PLUGIN: the path ./avs paraview prints; ParaView's Python on PYTHONPATH, see Documentation/ParaView.md)
 """
 import sys
 import time

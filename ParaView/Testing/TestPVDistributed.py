@@ -1,4 +1,4 @@
-"""The light crosses the MPI ranks' pieces (issue 13, item 4).
+"""The light crosses the MPI ranks' pieces.
 
 Renders DistributedScene.py with pvbatch on 1 rank and with `mpirun -np 2 pvbatch` on 2, and
 checks that the 2-rank picture of the "Ambient Scattering" representation agrees with the
@@ -7,7 +7,7 @@ alone) it does not (< 35 dB: the scene's shadow crosses the boundary, so the che
 A close view of one piece, where the other rank's renderer culls the volume, renders on 2
 ranks (no rank waits for another: each run has a time limit) and agrees with 1 rank.
 Prints the same comparison for ParaView's own volume representation, plain and with its
-volumetric scattering (the README's table), without checking it.
+volumetric scattering (the table of Documentation/ParaView.md), without checking it.
 
 usage: AVS_PARAVIEW_PYTHONPATH=... python3 TestPVDistributed.py PVBATCH MPIRUN PLUGIN OUTPUT_DIR
 (AVS_PARAVIEW_PYTHONPATH: the unpacked python3-paraview's dist-packages, pvbatch's PYTHONPATH.)

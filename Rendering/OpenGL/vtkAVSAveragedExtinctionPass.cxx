@@ -164,7 +164,7 @@ bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
   }
   run(3, shapes[2], 0);
   const bool ok = this->End(textures, error);
-  // Not kept for the next rebuild (issue 16: the memory of a volume at rest is the scalars and
+  // Not kept for the next rebuild (the memory of a volume at rest is the scalars and
   // the light grid's volumes); allocating them again costs a little on a software rasterizer.
   textures.ReleaseScratch();
   return ok;

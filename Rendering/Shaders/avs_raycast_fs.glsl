@@ -4,9 +4,7 @@
 // included), clipped to the volume box and to the opaque geometry's depth, marched front to back
 // in equal steps, with the mapper's effect snippet (declarations, per-ray set-up, per-pair and
 // per-sample code) put in at the four effect markers below. Each sample (RaySample) fetches one
-// texel of the volume
-// texture (AVS_VOLUME_TEXTURE: the scalars, or ambient scattering's texture that holds them
-// beside the averaged extinction) and classifies it (avs_classify.glsl). An effect may define
+// texel of the scalars (AVS_VOLUME_TEXTURE) and classifies it (avs_classify.glsl). An effect may define
 // AVS_EFFECT_TERMINATION (then its bool EffectContinues(float T, int i) ends the ray),
 // AVS_SAMPLE_PAIRS (with EffectContinues: the loop takes two samples per iteration, classifies
 // both, then runs the effect's per-pair code, which sees the pair's first index `pair` and

@@ -12,7 +12,7 @@
 //   its seed and the mappers for a driver, so the bound's fifth is room for another driver's
 //   arithmetic, not for noise: a model that got a fifth worse anywhere fails, where the ranking
 //   alone let ambient scattering get up to 14x worse on the nebula and still pass.
-// README.md ("Accuracy against the truth") gives the full-size figures and where ambient
+// Documentation/Accuracy.md gives the full-size figures and where ambient
 // scattering does not win (side-lit clouds of intermediate thickness).
 #include "AccuracyStudy.h"
 #include "MapperTestScene.h"

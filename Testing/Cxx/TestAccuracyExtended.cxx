@@ -1,5 +1,6 @@
 // The extended model against the truth at small size (48 x 48, 48^3 voxels, 128 paths per
-// pixel), asserting what README.md ("The extended model, measured") reports at full size:
+// pixel), asserting what Documentation/Accuracy.md ("The extended model, measured") reports at
+// full size:
 // - on the side-lit clouds of optical thickness 8.8 and 27 (--cloud-opacity 0.25, 0.6) the
 //   extended model has the lowest RMSE of EA, AO and both ambient-scattering models (by more
 //   than the truth's noise), and its mean radiance is within 0.75-1.33 of the truth's (the
@@ -66,7 +67,7 @@ int main(int, char*[])
         o.Rmse - x.Rmse > x.TruthNoise, std::string("side-lit: extended below ") + other + tag);
     }
     // Measured 0.82 and 0.87 here (0.75 and 0.86 at the study's full size): the 0.75-1.33 the
-    // README reports, with 0.07 to spare for other drivers.
+    // Documentation/Accuracy.md reports, with 0.07 to spare for other drivers.
     Expect(x.MeanRatio >= 0.75 && x.MeanRatio <= 1.33, "side-lit mean within 0.75-1.33" + tag);
     Expect(r["cloud_side/as"].MeanRatio < 0.6, "the paper's model too dark side-lit" + tag);
     Expect(r["cloud_back/asx"].Rmse <= r["cloud_back/as"].Rmse + r["cloud_back/as"].TruthNoise,

@@ -277,7 +277,7 @@ int main(int argc, char* argv[])
   // A binary mask removes samples in the maximum intensity: the half x < -0.025 of the volume
   // masked away gives the picture of the data with that half at the range's minimum (where
   // the maximum starts), up to the interpolation at the cut. (VTK 9.1's masked maximum is not
-  // that picture: 23.5 dB from ours, a patch of the volume's centre; README, settings table.)
+  // that picture: 23.5 dB from ours, a patch of the volume's centre; Documentation/VTKSettings.md.)
   {
     auto mask = vtkSmartPointer<vtkImageData>::New();
     mask->DeepCopy(data);

@@ -1,4 +1,4 @@
-// Bricking (issue 16, item 2; vtkAVSVolumeMapper::SetPartitions, SetMaximumGPUMemory): a small
+// Bricking (vtkAVSVolumeMapper::SetPartitions, SetMaximumGPUMemory): a small
 // volume rendered unsplit and split into forced partitions, (2, 2, 2) and (3, 1, 2), must give
 // the unsplit picture (>= 55 dB) for emission-absorption (point data, cell data, 16-bit scalars,
 // a clipping plane, a binary mask, a gradient opacity, nearest interpolation, jittering, a

@@ -1,4 +1,4 @@
-// Several components (issue 12, item 4; ALGORITHM.md section 1). EA against
+// Several components (ALGORITHM.md section 1). EA against
 // vtkGPUVolumeRayCastMapper (>= 35 dB): dependent components with 2 (colour from the first,
 // opacity from the second) and 4 (RGB direct, opacity from the fourth); independent components
 // (each its own colour and opacity functions and unit distance), with weights 1 and with a

@@ -1,4 +1,4 @@
-// Gradient opacity, interpolation type and shading flags (issue 12, item 5). EA against
+// Gradient opacity, interpolation type and shading flags. EA against
 // vtkGPUVolumeRayCastMapper (>= 35 dB) with a gradient opacity (SetGradientOpacity), with it
 // disabled (DisableGradientOpacityOn: the picture without it), and with nearest interpolation
 // (SetInterpolationTypeToNearest) on point and cell data; each picture differs from the one

@@ -1,4 +1,4 @@
-// Masks (issue 12, item 8): SetMaskInput with a binary mask (SetMaskTypeToBinary) and a label
+// Masks: SetMaskInput with a binary mask (SetMaskTypeToBinary) and a label
 // map (SetMaskTypeToLabelMap, the default) with the property's label functions
 // (vtkVolumeProperty::SetLabelColor, SetLabelScalarOpacity; a label without an opacity takes
 // component 0's) and MaskBlendFactor. EA against vtkGPUVolumeRayCastMapper (>= 35 dB) for the

@@ -1,4 +1,4 @@
-// Not-a-number voxels (issue 12, item 6): simulation output with masked cells. A volume with a
+// Not-a-number voxels: simulation output with masked cells. A volume with a
 // block of NaN voxels, scattered NaNs and infinities renders with every mapper and the CPU
 // reference (no error), with exactly one warning that gives the counts; NaN is empty space
 // (rays through the NaN block alone stay black, and the block changes the picture); infinities

@@ -1,4 +1,4 @@
-// Which scalars the mappers draw (issue 12, item 3): ScalarMode (default, point data, cell data,
+// Which scalars the mappers draw: ScalarMode (default, point data, cell data,
 // point field data, cell field data), SelectScalarArray by name and by index, ArrayAccessMode,
 // and cell scalars rendered as vtkGPUVolumeRayCastMapper renders them (values at the cell
 // centres, the volume spanning the points). Each case: our EA against VTK's mapper with the same

@@ -1,4 +1,4 @@
-// Every scalar type the mappers take (issue 16, item 1): char, signed char, unsigned char,
+// Every scalar type the mappers take: char, signed char, unsigned char,
 // short, unsigned short, int, unsigned int, float and double. 8- and 16-bit scalars go to the
 // GPU as normalized texels (signed ones with the sign bit flipped, vtkAVSTextureUpload.h), the
 // rest as floats, and the shader maps them back to data values. For each type three volumes:
