@@ -99,10 +99,19 @@ def check_links(root, failures):
                                 "not exist")
 
 
+def pictures_in(folder):
+    """The PNG files under folder, without following links (a shell block's folder links the
+    build folder, which may hold the folder itself)."""
+    found = set()
+    for directory, _, files in os.walk(folder):
+        found.update(os.path.join(directory, name) for name in files if name.endswith(".png"))
+    return found
+
+
 def check_pictures(folder, before, failures, where):
     checker = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "Scripts",
                            "CheckPicture.py")
-    for png in sorted(glob.glob(os.path.join(folder, "**", "*.png"), recursive=True)):
+    for png in sorted(pictures_in(folder)):
         if png in before:
             continue
         result = subprocess.run([sys.executable, checker, png], capture_output=True, text=True)
@@ -111,7 +120,7 @@ def check_pictures(folder, before, failures, where):
 
 
 def run_checked(command, cwd, env, where, failures, timeout=600):
-    before = set(glob.glob(os.path.join(cwd, "**", "*.png"), recursive=True))
+    before = pictures_in(cwd)
     try:
         result = subprocess.run(command, cwd=cwd, env=env, capture_output=True, text=True,
                                 timeout=timeout)
