@@ -360,12 +360,9 @@ std::vector<double> AccuracyTruth(const AccuracySettings& settings,
   for (int run = 0; run < 2; ++run)
   {
     const avs::PathTracerSettings pts = TruthSettings(settings, 17 + run);
-    truth[run] = TruthPicture(settings,
-      scene.Name,
-      run,
-      [&]() {
-        return avs::RenderPathTraced(scene.Core, scene.Parameters, pts, scene.Camera, size, size);
-      });
+    const auto render = [&]
+    { return avs::RenderPathTraced(scene.Core, scene.Parameters, pts, scene.Camera, size, size); };
+    truth[run] = TruthPicture(settings, scene.Name, run, render);
   }
   // Noise of the mean of both runs: the RMSE between them / 2.
   double se = 0.0;
@@ -534,13 +531,10 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
       // and each model's mean radiance against the truth's (below 1: too dark on average).
       avs::PathTracerSettings single = TruthSettings(settings, 17);
       single.MaximumBounces = 1;
-      const std::vector<double> once = TruthPicture(settings,
-        name,
-        2,
-        [&]() {
-          return avs::RenderPathTraced(
-            scene.Core, scene.Parameters, single, scene.Camera, size, size);
-        });
+      const auto& camera = scene.Camera;
+      const auto render = [&]
+      { return avs::RenderPathTraced(scene.Core, scene.Parameters, single, camera, size, size); };
+      const std::vector<double> once = TruthPicture(settings, name, 2, render);
       const double truthSum = Sum(reference);
       std::fprintf(stderr,
         "[avs-accuracy] %s: k = %.3f, path-tracer noise (RMSE) %.4f, single scattering %.0f %% "
