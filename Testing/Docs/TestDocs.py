@@ -52,13 +52,16 @@ class Block:
         return f"{self.page}:{self.line} ({self.language or 'no language'})"
 
 
-def read_blocks(root):
-    pages = [os.path.join(root, name) for name in ("README.md", "CHANGELOG.md")]
+def pages_of(root, *front):
+    """The front pages named that exist, then every page of Documentation/."""
+    pages = [os.path.join(root, name) for name in front]
     pages += sorted(glob.glob(os.path.join(root, "Documentation", "**", "*.md"), recursive=True))
+    return [page for page in pages if os.path.exists(page)]
+
+
+def read_blocks(root):
     blocks = []
-    for page in pages:
-        if not os.path.exists(page):
-            continue
+    for page in pages_of(root, "README.md", "CHANGELOG.md"):
         with open(page, encoding="utf-8") as f:
             lines = f.read().split("\n")
         name = os.path.relpath(page, root)
@@ -68,9 +71,8 @@ def read_blocks(root):
             if not opening:
                 i += 1
                 continue
-            mark = None
-            if i > 0 and MARK.match(lines[i - 1]):
-                mark = MARK.match(lines[i - 1]).group(1)
+            marked = MARK.match(lines[i - 1]) if i > 0 else None
+            mark = marked.group(1) if marked else None
             end = i + 1
             while end < len(lines) and lines[end].rstrip() != "```":
                 end += 1
@@ -83,11 +85,7 @@ def read_blocks(root):
 
 def check_links(root, failures):
     """Every relative link and picture of the pages must point at a file of the repository."""
-    pages = [os.path.join(root, name) for name in ("README.md", "CHANGELOG.md", "ARCHITECTURE.md")]
-    pages += sorted(glob.glob(os.path.join(root, "Documentation", "**", "*.md"), recursive=True))
-    for page in pages:
-        if not os.path.exists(page):
-            continue
+    for page in pages_of(root, "README.md", "CHANGELOG.md", "ARCHITECTURE.md"):
         with open(page, encoding="utf-8") as f:
             text = f.read()
         for target in re.findall(r"\]\(([^)\s]+)\)", text):
@@ -293,7 +291,8 @@ def main():
     env = dict(os.environ)
     env.setdefault("PYTHONDONTWRITEBYTECODE", "1")
     failures, counted = [], 0
-    check_links(args.root, failures)
+    if not args.pvbatch:  # (the plugin's run has the same pages: Docs.CodeBlocks checks them)
+        check_links(args.root, failures)
     chains = {}
     cxx = {}
     for block in blocks:
