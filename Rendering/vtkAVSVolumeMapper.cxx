@@ -2,14 +2,10 @@
 
 #include "vtkAVSVolumeMapperInternals.h"
 
-#include "Classifier.h"
-#include "ImageSampleDistance.h"
 #include "ReferenceRenderer.h"
 #include "ScatteringParameters.h"
-#include "ScatteringTable.h"
-#include "vtkAVSClipTranslator.h"
 #include "vtkAVSDataTranslator.h"
-#include "vtkAVSPropertyTranslator.h"
+#include "vtkAVSPrecomputeInputs.h"
 #include "vtkAVSRayCaster.h"
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSSceneTranslator.h"
@@ -18,7 +14,7 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkCamera.h"
-#include "vtkContourValues.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkMatrix4x4.h"
@@ -67,16 +63,29 @@ double* vtkAVSVolumeMapper::GetBounds()
 
 void vtkAVSVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
-  auto& in = *this->Internal;
-  if (window && window == in.RayCaster.GetWindow())
+  if (window && window == this->Internal->RayCaster.GetWindow())
   {
-    in.RayCaster.ReleaseGraphicsResources(window);
-    in.ScalarsUploaded = in.TransferUploaded = in.LightVolumesUploaded = in.OcclusionUploaded =
-      in.DiffuseUploaded = false;
-    in.SliceTable = nullptr;
-    in.AveragedRadius = -1.0;
-    in.ForgetUploadedContent();
+    this->ResetGraphicsState();
   }
+}
+
+void vtkAVSVolumeMapper::ResetGraphicsState()
+{
+  // The one reset of what the GPU holds: a released window, a context switch, a volume that
+  // could not be prepared. The textures and programs go, and everything that knew what they
+  // held forgets it, so the next frame uploads and rebuilds from nothing.
+  auto& in = *this->Internal;
+  in.RayCaster.ReleaseGraphicsResources(in.RayCaster.GetWindow());
+  in.ForgetUploads();
+  this->InvalidateLighting();
+}
+
+void vtkAVSVolumeMapper::Internals::ForgetUploads()
+{
+  this->UploadedScalarsVersion = -1;
+  this->UploadedTransferVersion = -1;
+  this->UploadedFingerprints.clear();
+  this->UploadedContentKey.clear();
 }
 
 bool vtkAVSVolumeMapper::PrepareScene(vtkVolume* volume)
@@ -84,7 +93,7 @@ bool vtkAVSVolumeMapper::PrepareScene(vtkVolume* volume)
   auto& in = *this->Internal;
   std::string error;
 
-  // The input and the mask, converted and checked when they changed
+  // The input, the mask and the property, converted and checked when they changed
   // (vtkAVSVolumeMapperData.cxx).
   vtkImageData* input = this->PrepareInput();
   if (!input)
@@ -97,44 +106,9 @@ bool vtkAVSVolumeMapper::PrepareScene(vtkVolume* volume)
     vtkErrorMacro("Cannot render: the volume has no property.");
     return false;
   }
-  if (property != in.PropertyObject || property->GetMTime() != in.PropertyTime ||
-    this->GetMTime() != in.ClassificationTime)
+  if (!this->PrepareProperty(property))
   {
-    std::string warning;
-    avs::MediumOptions& medium = in.Scene.Medium;
-    medium.Mask = medium.MaskValues.Values.empty()
-      ? avs::MaskType::None
-      : (this->MaskType == BinaryMaskType ? avs::MaskType::Binary : avs::MaskType::LabelMap);
-    medium.MaskBlendFactor = this->MaskBlendFactor;
-    if (!vtkAVSPropertyTranslator::ToMedium(property,
-          in.Ranges,
-          in.ScalarType,
-          medium.Mask == avs::MaskType::LabelMap,
-          in.Scene,
-          error,
-          warning))
-    {
-      in.PropertyObject = nullptr;
-      vtkErrorMacro("Cannot render: " << error);
-      return false;
-    }
-    if (!warning.empty())
-    {
-      vtkWarningMacro(<< warning << ".");
-    }
-    this->WarnAboutShading(property);
-    in.PropertyObject = property;
-    in.PropertyTime = property->GetMTime();
-    in.ClassificationTime = this->GetMTime();
-    in.TransferUploaded = false;
-    ++in.TransferVersion;
-    // Extinction depends on the opacity alone: a change of colour alone rebuilds nothing.
-    std::vector<double> inputs = avs::ExtinctionKey(in.Scene);
-    if (inputs != in.ExtinctionInputs)
-    {
-      in.ExtinctionInputs = std::move(inputs);
-      ++in.OpacityVersion;
-    }
+    return false;
   }
 
   // Distributed rendering: the whole image of which the input is a piece.
@@ -182,30 +156,8 @@ bool vtkAVSVolumeMapper::PrepareScene(vtkVolume* volume)
   worldToData->DeepCopy(dataToWorld);
   worldToData->Invert();
 
-  // Clipping planes (world) and cropping (data coordinates) in the index frame.
-  avs::ClipRegion clip;
-  if (!vtkAVSClipTranslator::ToClipRegion(this->ClippingPlanes,
-        this->Cropping != 0,
-        this->CroppingRegionPlanes,
-        this->CroppingRegionFlags,
-        input,
-        g,
-        dataToWorld,
-        clip,
-        error))
-  {
-    vtkErrorMacro("Cannot render: " << error);
-    return false;
-  }
-  // The clip region is in the scene (its index frame); a change bumps OpacityVersion, since
-  // sigma_t depends on it (everything built from sigma_t is rebuilt).
-  if (clip != in.Scene.Clip)
-  {
-    in.Scene.Clip = clip;
-    ++in.OpacityVersion;
-  }
-
-  return true;
+  // Clipping planes and cropping in the index frame (vtkAVSVolumeMapperData.cxx).
+  return this->PrepareClip(input, dataToWorld);
 }
 
 bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool interactive)
@@ -246,23 +198,20 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     lookBack[1] > in.UploadedLookBack[1] || lookBack[2] > in.UploadedLookBack[2];
   // (Bricks with more layers than the look-back needs serve: a smaller radius or sample distance
   // uploads nothing again; a larger one uploads the bricks with the layers it needs.)
-  if (partitions != in.UploadedPartitions || moreLayers)
-  {
-    in.ScalarsUploaded = false;
-  }
   this->LastDataUploadFraction = 0.0; // unless this frame uploads the data
-  if (!in.ScalarsUploaded)
+  if (in.UploadedScalarsVersion != in.ScalarsVersion || partitions != in.UploadedPartitions ||
+    moreLayers)
   {
     const bool wasBricked = in.RayCaster.IsBricked();
     if (!in.RayCaster.UploadScalars(
           in.Scene, in.ScalarType, in.ScalarSource(), partitions, lookBack, error))
     {
       // Some textures may hold part of the new data: none is trusted for the next upload.
-      in.ForgetUploadedContent();
+      in.ForgetUploads();
       vtkErrorMacro("Cannot render: " << error);
       return false;
     }
-    in.ScalarsUploaded = true;
+    in.UploadedScalarsVersion = in.ScalarsVersion;
     in.UploadedPartitions = partitions;
     in.UploadedLookBack = lookBack;
     in.UploadedFingerprints = in.Fingerprints;
@@ -273,48 +222,41 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     ++this->NumberOfDataUploads;
     if (wasBricked || in.RayCaster.IsBricked())
     {
-      in.TransferUploaded = false; // the mask and validity follow the bricks
+      in.UploadedTransferVersion = -1; // the mask and validity follow the bricks
     }
   }
-  if (!in.TransferUploaded)
+  if (in.UploadedTransferVersion != in.TransferVersion)
   {
     if (!in.RayCaster.UploadClassification(in.Scene, error))
     {
       vtkErrorMacro("Cannot render: " << error);
       return false;
     }
-    in.TransferUploaded = true;
+    in.UploadedTransferVersion = in.TransferVersion;
   }
 
-  const int effect = this->GetEffect();
-  if (effect == 0)
-  {
-    return true;
-  }
-  // Ambient scattering with compute shaders needs no extinction grid on the CPU. (The GPU
-  // light-volume pass takes tables of up to MaximumTauNodes tau nodes; larger user tables are
-  // marched on the CPU.)
-  const avs::ScatteringTable* table = effect == 2 ? this->GetScatteringTable() : nullptr;
-  if (effect == 2 && !table)
-  {
-    return false; // the subclass reported why
-  }
-  const bool gpuScattering = effect == 2 && this->PrecomputeOnGPU &&
-    in.RayCaster.SupportsComputeShaders() &&
-    table->Axes.NumberOfTau <= vtkAVSRayCaster::MaximumTauNodes;
-  // (A piece of a larger whole computes its share of the averaged extinction on the CPU, and so
-  // does a split volume: the GPU pass reads the unsplit scalars' texture. Ambient occlusion asks
-  // for the grid itself where it computes on the CPU.)
-  if (effect == 2 && (!gpuScattering || this->LitAsPiece || in.RayCaster.IsBricked()))
-  {
-    this->UpdateExtinction();
-  }
-
-  if (effect == 1)
-  {
-    return this->PrepareOcclusion();
-  }
-  return this->PrepareScattering(table, gpuScattering, in.WorldToData, interactive);
+  // The subclass's precomputed volumes (vtkAVSOcclusionVolume, vtkAVSScatteringVolumes).
+  vtkAVSPrecomputeInputs inputs;
+  inputs.RayCaster = &in.RayCaster;
+  inputs.Scene = &in.Scene;
+  inputs.Parameters = &in.Parameters;
+  inputs.DataVersion = in.DataVersion;
+  inputs.OpacityVersion = in.OpacityVersion;
+  inputs.PrecomputeOnGPU = this->PrecomputeOnGPU != 0;
+  inputs.Interactive = interactive;
+  inputs.WorldToData = in.WorldToData;
+  inputs.WorldLights = &in.WorldLights;
+  inputs.FollowsCamera = &in.FollowsCamera;
+  inputs.Whole = &in.Whole;
+  inputs.PieceOffset = in.PieceOffset;
+  inputs.LitAsPiece = this->LitAsPiece != 0;
+  inputs.SumVersion = in.SumVersion;
+  inputs.Extinction = [this]() -> const avs::Grid& { return this->UpdateExtinction(); };
+  auto average = [this](const avs::GridGeometry& grid, avs::Grid& sum, std::string& message)
+  { return this->AverageAcrossPieces(grid, sum, message); };
+  inputs.AverageAcrossPieces = average;
+  inputs.Progress = [this](double progress) { this->UpdateProgress(progress); };
+  return this->PrepareLighting(inputs);
 }
 
 void vtkAVSVolumeMapper::WarnAboutShading(vtkVolumeProperty* property)
@@ -361,162 +303,85 @@ void vtkAVSVolumeMapper::WarnAboutShading(vtkVolumeProperty* property)
 
 void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 {
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
-  auto& in = *this->Internal;
-  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  if (!window)
-  {
-    vtkErrorMacro("Cannot render: this mapper needs an OpenGL render window.");
-    return;
-  }
   // Inside vtkDualDepthPeelingPass's volume peeling the volume is drawn once, in the first call
-  // (see vtkAVSRenderPasses).
+  // (see vtkAVSRenderPasses): the later calls are no render of it.
   const vtkAVSRenderPasses::Role role = vtkAVSRenderPasses::RoleOf(volume, this);
   if (role == vtkAVSRenderPasses::Role::Skip)
   {
     return;
   }
+  // As vtkGPUVolumeRayCastMapper::Render: the start event, the checks, the frame, its time, the
+  // end event (an observer sees one pair per render, drawn or refused).
+  this->InvokeEvent(vtkCommand::VolumeMapperRenderStartEvent, nullptr);
+  const auto start = std::chrono::steady_clock::now();
+  FrameAssembly assembly;
+  assembly.Role = role;
+  if (this->ValidateRender(renderer, volume, assembly))
+  {
+    this->GPURender(renderer, volume, assembly);
+  }
+  this->TimeToDraw =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  this->InvokeEvent(vtkCommand::VolumeMapperRenderEndEvent, nullptr);
+}
+
+bool vtkAVSVolumeMapper::ValidateRender(vtkRenderer* renderer,
+  vtkVolume* volume,
+  FrameAssembly& assembly)
+{
+  auto& in = *this->Internal;
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  if (!window)
+  {
+    vtkErrorMacro("Cannot render: this mapper needs an OpenGL render window.");
+    return false;
+  }
   if (window != in.RayCaster.GetWindow())
   {
     // Another window: its context gets its own resources.
-    this->ReleaseGraphicsResources(in.RayCaster.GetWindow());
-    in.ForgetUploadedContent();
+    this->ResetGraphicsState();
     in.RayCaster.SetWindow(window);
-    in.ScalarsUploaded = in.TransferUploaded = in.LightVolumesUploaded = in.OcclusionUploaded =
-      false;
-    in.SliceTable = nullptr;
-    in.AveragedRadius = -1.0;
   }
-  // Blend modes: emission-absorption renders VTK's (but slice), the lit mappers composite only.
-  const bool lit = this->GetEffect() != 0;
-  if (lit ? this->BlendMode != vtkVolumeMapper::COMPOSITE_BLEND
-          : !vtkAVSShaderOptions::IsSupportedBlend(this->BlendMode))
-  {
-    vtkErrorMacro(
-      "Cannot render: " << this->GetClassName() << " does not render the "
-                        << vtkAVSShaderOptions::BlendModeName(this->BlendMode)
-                        << " blend mode (BlendMode " << this->BlendMode << "); "
-                        << (lit ? "it renders the composite blend mode only"
-                                : "vtkEmissionAbsorptionVolumeMapper renders composite, "
-                                  "maximum, minimum and average intensity, additive "
-                                  "and isosurface"));
-    return;
-  }
-  vtkAVSShaderOptions::Blend blend;
-  blend.Mode = this->BlendMode;
-  if (blend.Mode == vtkVolumeMapper::ISOSURFACE_BLEND)
-  {
-    vtkContourValues* contours =
-      volume->GetProperty() ? volume->GetProperty()->GetIsoSurfaceValues() : nullptr;
-    for (int c = 0; contours && c < contours->GetNumberOfContours(); ++c)
-    {
-      blend.IsoValues.push_back(contours->GetValue(c));
-    }
-    if (blend.IsoValues.empty())
-    {
-      return; // as vtkGPUVolumeRayCastMapper: no contour, nothing to draw
-    }
-    std::sort(blend.IsoValues.begin(), blend.IsoValues.end());
-  }
+  assembly.Window = window;
+  return this->ResolveBlend(volume, assembly);
+}
+
+void vtkAVSVolumeMapper::GPURender(vtkRenderer* renderer,
+  vtkVolume* volume,
+  FrameAssembly& assembly)
+{
+  auto& in = *this->Internal;
   // VTK's test for an interactive render (vtkGPUVolumeRayCastMapper's and
   // vtkFixedPointVolumeRayCastMapper's): less than a second allotted to the volume.
-  const double allocated = volume->GetAllocatedRenderTime();
   const bool adjust = this->AutoAdjustSampleDistances != 0;
-  const bool interactive = adjust && allocated < 1.0;
+  assembly.Interactive = adjust && volume->GetAllocatedRenderTime() < 1.0;
   // The GPU memory budget of this volume's textures, for its uploads and its draw.
   const vtkAVSTextureMemory::ScopedBudget budget(this->MaximumGPUMemory > 0
       ? this->MaximumGPUMemory * 1024.0 * 1024.0
       : in.RayCaster.ReportedGPUMemoryBytes());
-  if (!this->Prepare(renderer, volume, interactive))
+  if (!this->Prepare(renderer, volume, assembly.Interactive))
   {
     // Nothing of a volume that could not be prepared stays on the GPU (one that does not fit
     // gets one error, and the next starts from nothing).
-    this->ReleaseGraphicsResources(window);
+    this->ResetGraphicsState();
     return;
   }
-  if (!lit && blend.Mode != vtkVolumeMapper::COMPOSITE_BLEND &&
-    in.Scene.Medium.NumberOfComponents() > 1)
+  if (!this->CheckPreparedBlend(assembly))
   {
-    vtkErrorMacro("Cannot render: the " << vtkAVSShaderOptions::BlendModeName(this->BlendMode)
-                                        << " blend mode takes one-component data; this volume has "
-                                        << in.Scene.Medium.NumberOfComponents()
-                                        << " components (use the composite blend mode)");
     return;
   }
-  if (blend.Mode != vtkVolumeMapper::COMPOSITE_BLEND && in.RayCaster.IsBricked())
-  {
-    // Each brick's pass sees a part of the ray: the extreme value, the average, the sum and the
-    // crossings between two samples are not what "over" of the parts gives.
-    vtkErrorMacro("Cannot render: the "
-      << vtkAVSShaderOptions::BlendModeName(this->BlendMode) << " blend mode is not rendered on a "
-      << "volume split into bricks (" << in.RayCaster.GetNumberOfBricks()
-      << "; see SetPartitions): use the composite blend mode, or a volume within one 3D texture");
-    this->ReleaseGraphicsResources(window); // nothing of it stays on the GPU
-    return;
-  }
-  blend.ScalarRange[0] = in.Scene.Transfer.Minimum;
-  blend.ScalarRange[1] = in.Scene.Transfer.Maximum;
-  blend.AverageRange[0] = std::min(this->AverageIPScalarRange[0], this->AverageIPScalarRange[1]);
-  blend.AverageRange[1] = std::max(this->AverageIPScalarRange[0], this->AverageIPScalarRange[1]);
-  int width = 0, height = 0, x = 0, y = 0;
-  renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
-  double distance = this->ImageSampleDistance;
-  if (adjust)
-  {
-    avs::FrameBudget budget;
-    budget.AllocatedSeconds = allocated;
-    budget.SecondsPerRay = in.SecondsPerRay;
-    budget.Pixels = static_cast<double>(width) * height;
-    budget.Previous = this->LastImageSampleDistance;
-    budget.Minimum = this->MinimumImageSampleDistance;
-    budget.Maximum = this->MaximumImageSampleDistance;
-    distance = avs::ChooseImageSampleDistance(budget);
-  }
-  vtkAVSRayCaster::Frame frame;
-  frame.Mode = this->GetEffect() == 0
-    ? avs::RenderMode::EmissionAbsorption
-    : (this->GetEffect() == 1 ? avs::RenderMode::AmbientOcclusion
-                              : avs::RenderMode::AmbientScattering);
-  frame.Parameters = in.Parameters;
-  frame.WorldToIndex = in.WorldToIndex;
-  frame.Dimensions = in.Scene.Scalars.Geometry.Dimensions;
-  frame.Spacing = in.Scene.Scalars.Geometry.Spacing;
-  frame.Border = in.Scene.Scalars.Geometry.Border;
-  frame.Clip = in.Scene.Clip;
-  frame.Blend = blend;
-  frame.LightVolumeDimensions = in.LightGridDimensions;
-  frame.LightsPerPair = avs::ScatteringParameters::LightsPerPair(
-    in.Parameters.SampleDistance, in.Whole.Capped(in.Parameters.LightVolumeMaximumDimension));
-  frame.WholeDimensions = in.Whole.Dimensions;
-  frame.PieceOffset = in.PieceOffset;
-  frame.OcclusionDimensions = in.OcclusionDimensions;
-  frame.Lights = in.WorldLights;
-  frame.Jitter = this->UseJittering != 0;
-  frame.Prop = volume;
-  frame.Mapper = this;
-  frame.PeelingFront = role == vtkAVSRenderPasses::Role::PeelingFront;
-  frame.ImageSampleDistance = distance;
-  frame.Display = this->ResolveDisplay(renderer, volume);
-  frame.SkipEmptySpace = this->EmptySpaceSkipping != 0;
-  // VTK's still frame: a second or more allotted (the interactor's frames get less).
-  this->ResolveRefinement(renderer,
-    volume,
-    allocated >= 1.0,
-    in.RayCaster.IsBricked(),
-    frame.Refinement.Enabled,
-    frame.Refinement.Still,
-    frame.Refinement.Key,
-    frame.Refinement.Geometry);
-  frame.Refinement.MaximumSamples = this->MaximumSamplesPerPixel;
+  this->AssembleFrame(renderer, volume, assembly);
+
   // The adjustment times the ray-casting pass alone (the precomputation does not scale with the
   // rays), finished on the GPU as vtkOpenGLGPUVolumeRayCastMapper finishes its frames.
+  using Clock = std::chrono::steady_clock;
   if (adjust)
   {
-    window->WaitForCompletion();
+    assembly.Window->WaitForCompletion();
   }
   const auto passStart = Clock::now();
   std::string error;
+  const vtkAVSRayCaster::Frame& frame = assembly.Frame;
   if (!in.RayCaster.Render(renderer, frame, error))
   {
     vtkErrorMacro("Cannot render: " << error);
@@ -524,12 +389,14 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
   if (adjust && !in.RayCaster.GetLastRefined()) // (a refined frame is no ray-casting pass)
   {
-    window->WaitForCompletion();
+    assembly.Window->WaitForCompletion();
     const auto& rays = in.RayCaster.GetLastPassSize();
     const double seconds = std::chrono::duration<double>(Clock::now() - passStart).count();
     in.SecondsPerRay = seconds / std::max(1.0, static_cast<double>(rays[0]) * rays[1]);
   }
-  this->LastImageSampleDistance = static_cast<float>(distance);
+
+  // Statistics.
+  this->LastImageSampleDistance = static_cast<float>(frame.ImageSampleDistance);
   this->LastExposure = frame.Display.Exposure;
   this->LastToneMapping =
     frame.Display.Curve == avs::ToneMapping::Shoulder ? ShoulderToneMapping : ClampToneMapping;
@@ -537,31 +404,10 @@ void vtkAVSVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   this->LastEmptyCellFraction = in.RayCaster.GetEmptyCellFraction();
   this->LastSkippedEmptySpace = in.RayCaster.GetLastSkippedEmptySpace() ? 1 : 0;
   ++this->NumberOfRenderedFrames;
-  if (interactive)
+  if (assembly.Interactive)
   {
     ++this->NumberOfInteractiveFrames;
   }
-  this->TimeToDraw = std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-avs::DisplayTransform vtkAVSVolumeMapper::ResolveDisplay(vtkRenderer* renderer, vtkVolume* volume)
-{
-  const avs::ScatteringParameters& rp = this->Internal->Parameters;
-  avs::DisplayTransform display = rp.Display;
-  // Auto exposure meters the lights (world space) over the world box of the whole image (of
-  // which the input may be a piece: every process of a distributed render meters the same);
-  // only ambient scattering is lit by them.
-  if (rp.AutoExposure && this->GetEffect() == 2)
-  {
-    display.Exposure *= avs::AutoExposureFactor(
-      this->Internal->WorldLights, this->Internal->Whole, &volume->GetMatrix()->Element[0][0]);
-  }
-  // Under vtkToneMappingPass the pass maps the picture: the radiance goes to it linear.
-  if (vtkAVSRenderPasses::UnderToneMapping(renderer))
-  {
-    display.Curve = avs::ToneMapping::Clamp;
-  }
-  return display;
 }
 
 void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
@@ -589,8 +435,8 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastExposure: " << this->LastExposure << "\n";
   os << indent << "LastToneMapping: " << this->LastToneMapping << "\n";
   os << indent << "PrecomputeOnGPU: " << (this->PrecomputeOnGPU ? "On" : "Off") << "\n";
-  os << indent << "LightVolumesOnGPU: " << (this->LightVolumesOnGPU ? "yes" : "no") << "\n";
-  os << indent << "OcclusionOnGPU: " << (this->OcclusionOnGPU ? "yes" : "no") << "\n";
+  os << indent << "LightVolumesOnGPU: " << (this->GetLightVolumesOnGPU() ? "yes" : "no") << "\n";
+  os << indent << "OcclusionOnGPU: " << (this->GetOcclusionOnGPU() ? "yes" : "no") << "\n";
   os << indent << "EmptySpaceSkipping: " << (this->EmptySpaceSkipping ? "On" : "Off") << "\n";
   os << indent << "LastEmptyCellFraction: " << this->LastEmptyCellFraction << "\n";
   os << indent << "LastDataUploadFraction: " << this->LastDataUploadFraction << "\n";
@@ -623,10 +469,10 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
             : " (not honoured by this mapper: rendering reports an error, draws nothing)")
      << "\n";
   os << indent << "NumberOfDataUploads: " << this->NumberOfDataUploads << "\n";
-  os << indent << "NumberOfExtinctionRebuilds: " << this->NumberOfExtinctionRebuilds << "\n";
-  os << indent << "NumberOfLightVolumeRebuilds: " << this->NumberOfLightVolumeRebuilds << "\n";
-  os << indent << "NumberOfOcclusionRebuilds: " << this->NumberOfOcclusionRebuilds << "\n";
-  os << indent << "NumberOfDiffusionRebuilds: " << this->NumberOfDiffusionRebuilds << "\n";
+  os << indent << "NumberOfExtinctionRebuilds: " << this->GetNumberOfExtinctionRebuilds() << "\n";
+  os << indent << "NumberOfLightVolumeRebuilds: " << this->GetNumberOfLightVolumeRebuilds() << "\n";
+  os << indent << "NumberOfOcclusionRebuilds: " << this->GetNumberOfOcclusionRebuilds() << "\n";
+  os << indent << "NumberOfDiffusionRebuilds: " << this->GetNumberOfDiffusionRebuilds() << "\n";
   os << indent << "NumberOfRenderedFrames: " << this->NumberOfRenderedFrames << "\n";
   os << indent << "NumberOfInteractiveFrames: " << this->NumberOfInteractiveFrames << "\n";
   os << indent << "MaximumGPUMemory: " << this->MaximumGPUMemory

@@ -65,10 +65,11 @@
 namespace avs
 {
 struct DisplayTransform;
+struct Grid;
 struct GridGeometry;
 struct ScatteringParameters;
-class ScatteringTable;
 }
+struct vtkAVSPrecomputeInputs;
 
 class vtkFloatArray;
 class vtkImageData;
@@ -380,10 +381,10 @@ public:
   ///@{
   /**
    * Whether the last light volumes (ambient scattering) or occlusion volume (ambient occlusion)
-   * were computed on the GPU.
+   * were computed on the GPU (always false for the mappers that do not build them).
    */
-  vtkGetMacro(LightVolumesOnGPU, vtkTypeBool);
-  vtkGetMacro(OcclusionOnGPU, vtkTypeBool);
+  virtual vtkTypeBool GetLightVolumesOnGPU() { return 0; }
+  virtual vtkTypeBool GetOcclusionOnGPU() { return 0; }
   ///@}
 
   ///@{
@@ -391,13 +392,14 @@ public:
    * How often the mapper converted and uploaded the input scalars, rebuilt the averaged
    * extinction, rebuilt a light volume (one count per light), rebuilt the ambient-occlusion
    * volume, rendered a frame, and rendered an interactive frame (AutoAdjustSampleDistances
-   * on, less than a second allotted), and solved the extended model's diffusion.
+   * on, less than a second allotted), and solved the extended model's diffusion. The rebuilds
+   * are counted by the mapper that builds the volume (0 for the others).
    */
   vtkGetMacro(NumberOfDataUploads, int);
-  vtkGetMacro(NumberOfExtinctionRebuilds, int);
-  vtkGetMacro(NumberOfLightVolumeRebuilds, int);
-  vtkGetMacro(NumberOfOcclusionRebuilds, int);
-  vtkGetMacro(NumberOfDiffusionRebuilds, int);
+  virtual int GetNumberOfExtinctionRebuilds() { return 0; }
+  virtual int GetNumberOfLightVolumeRebuilds() { return 0; }
+  virtual int GetNumberOfOcclusionRebuilds() { return 0; }
+  virtual int GetNumberOfDiffusionRebuilds() { return 0; }
   vtkGetMacro(NumberOfRenderedFrames, int);
   vtkGetMacro(NumberOfInteractiveFrames, int);
   ///@}
@@ -453,7 +455,12 @@ public:
   vtkGetMacro(NumberOfBricks, int);
 
   /**
-   * Renders the volume (called by vtkVolume).
+   * Renders the volume (called by vtkVolume), as vtkGPUVolumeRayCastMapper::Render does: a
+   * vtkCommand::VolumeMapperRenderStartEvent, the checks (an error draws nothing), the frame
+   * (uploads and precomputation of what changed, then the ray-casting pass), TimeToDraw, and a
+   * vtkCommand::VolumeMapperRenderEndEvent: one pair of events per render, drawn or refused.
+   * (Inside vtkDualDepthPeelingPass the volume is drawn in the pass's first call; the later
+   * calls of the same frame draw nothing and fire no events.)
    */
   void Render(vtkRenderer* renderer, vtkVolume* volume) override;
 
@@ -478,8 +485,16 @@ protected:
   /// The subclass's parameters into the shared parameter struct (Core/ScatteringParameters.h),
   /// which already holds the base class's values.
   virtual void FillParameters(avs::ScatteringParameters& parameters) = 0;
-  /// For ambient scattering: the loaded scattering table, or nullptr after reporting an error.
-  virtual const avs::ScatteringTable* GetScatteringTable() { return nullptr; }
+  /// The subclass's precomputed volumes (the lit mappers' owners, vtkAVSOcclusionVolume and
+  /// vtkAVSScatteringVolumes), brought up to date for the frame after the data and the
+  /// classification are uploaded; false after reporting an error. None by default.
+  virtual bool PrepareLighting(const vtkAVSPrecomputeInputs&) { return true; }
+  /// Forgets what the GPU holds of them (part of the one reset: a released window, a context
+  /// switch, a volume that could not be prepared).
+  virtual void InvalidateLighting() {}
+  /// The grids of the precomputed volumes the ray caster samples: the light grid, the occlusion
+  /// grid (left as they are by a mapper without them).
+  virtual void GetPrecomputedGrids(std::array<int, 3>&, std::array<int, 3>&) const {}
 
   double SampleDistance = 0.0;
   vtkTypeBool AutoAdjustSampleDistances = 1;
@@ -503,8 +518,6 @@ protected:
   vtkTypeBool AutoExposure = 0;
   double LastExposure = 0.0;
   int LastToneMapping = -1;
-  vtkTypeBool LightVolumesOnGPU = 0;
-  vtkTypeBool OcclusionOnGPU = 0;
   int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
   vtkMultiProcessController* Controller = nullptr;
   vtkTypeBool LitAsPiece = 0;
@@ -514,10 +527,6 @@ protected:
   int MaximumSamplesPerPixel = 1024;
 
   int NumberOfDataUploads = 0;
-  int NumberOfExtinctionRebuilds = 0;
-  int NumberOfLightVolumeRebuilds = 0;
-  int NumberOfDiffusionRebuilds = 0;
-  int NumberOfOcclusionRebuilds = 0;
   int NumberOfRenderedFrames = 0;
   int NumberOfInteractiveFrames = 0;
   int NumberOfBricks = 0;
@@ -528,6 +537,16 @@ private:
 
   struct Internals;
   std::unique_ptr<Internals> Internal;
+  /// The frame being drawn (vtkAVSVolumeMapperInternals.h).
+  struct FrameAssembly;
+  /// Render's steps: the window (a new one resets what the GPU held) and the blend-mode rules;
+  /// false: nothing is drawn (after an error, or for an isosurface without contours) ...
+  bool ValidateRender(vtkRenderer* renderer, vtkVolume* volume, FrameAssembly& assembly);
+  /// ... then the uploads and precomputation of what changed, the frame and its statistics.
+  void GPURender(vtkRenderer* renderer, vtkVolume* volume, FrameAssembly& assembly);
+  /// The one reset of what the GPU holds: the ray caster's resources, what the uploads held, the
+  /// subclass's precomputed volumes (InvalidateLighting).
+  void ResetGraphicsState();
   /// Converts, checks, uploads and precomputes what changed; an interactive frame keeps the light
   /// volumes of camera-following lights.
   bool Prepare(vtkRenderer* renderer, vtkVolume* volume, bool interactive);
@@ -535,29 +554,33 @@ private:
   /// piece, the parameters, the transforms and the clip region, converted and checked when they
   /// changed (errors reported).
   bool PrepareScene(vtkVolume* volume);
-  /// PrepareScene's first part (vtkAVSVolumeMapperData.cxx): the input image and its mask,
-  /// converted and checked when they changed (new data with the values of the converted data
-  /// is not converted again); null after an error (reported).
+  /// PrepareScene's parts that make the scene (vtkAVSVolumeMapperData.cxx): the input image and
+  /// its mask, converted and checked when they changed (new data with the values of the
+  /// converted data is not converted again; null after an error, reported) ...
   vtkImageData* PrepareInput();
-  /// PrepareInput's mask, converted and checked when it changed; false after an error.
   bool PrepareMask();
-  /// Prepare's precomputation (vtkAVSVolumeMapperPrecompute.cxx), after the uploads of the data
-  /// and the classification: the ambient-occlusion volume; for ambient scattering the table
-  /// slice, the averaged extinction, the light volumes (`gpuScattering`: on the GPU) and the
-  /// extended model's fluence. Each is rebuilt when what it was built from changed.
-  bool PrepareOcclusion();
-  bool PrepareScattering(const avs::ScatteringTable* table,
-    bool gpuScattering,
-    vtkMatrix4x4* worldToData,
-    bool interactive);
+  /// ... the property's classification, and the clipping planes and cropping in the index frame
+  /// (false after an error, reported).
+  bool PrepareProperty(vtkVolumeProperty* property);
+  bool PrepareClip(vtkImageData* input, vtkMatrix4x4* dataToWorld);
+  /// The frame's assembly (vtkAVSVolumeMapperFrame.cxx): the blend mode this mapper renders
+  /// (errors reported; false also for an isosurface without contours), the checks it needs
+  /// after the scene is prepared, and the ray caster's frame: image sample distance, display
+  /// transform, refinement.
+  bool ResolveBlend(vtkVolume* volume, FrameAssembly& assembly);
+  bool CheckPreparedBlend(const FrameAssembly& assembly);
+  void AssembleFrame(vtkRenderer* renderer, vtkVolume* volume, FrameAssembly& assembly);
   /// Distributed rendering (vtkAVSVolumeMapperPieces.cxx): where the input lies in WholeExtent
   /// (Internals' Whole, PieceOffset, LitAsPiece), checked; and the averaged extinction of the
   /// whole on `lightGrid` for the render (the sum UpdatePieceLighting made; one process: its
   /// share alone), without communicating.
   bool ResolvePiece(vtkImageData* input, std::string& error);
-  bool AverageAcrossPieces(const avs::GridGeometry& lightGrid, std::string& error);
-  /// sigma_t on the CPU (Internals' Extinction), rebuilt when the data or the opacity changed.
-  void UpdateExtinction();
+  bool AverageAcrossPieces(const avs::GridGeometry& lightGrid,
+    avs::Grid& averaged,
+    std::string& error);
+  /// sigma_t on the CPU (Internals' Extinction), rebuilt when the data or the opacity changed
+  /// (vtkAVSVolumeMapperData.cxx).
+  const avs::Grid& UpdateExtinction();
   /// The frame's display transform: the parameters' exposure (metered with AutoExposure) and
   /// tone curve (none under a vtkToneMappingPass).
   avs::DisplayTransform ResolveDisplay(vtkRenderer* renderer, vtkVolume* volume);

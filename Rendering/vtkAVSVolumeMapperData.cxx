@@ -5,22 +5,26 @@
 #include "Classifier.h"
 #include "Fingerprint.h"
 #include "ReferenceRenderer.h"
+#include "vtkAVSClipTranslator.h"
 #include "vtkAVSDataTranslator.h"
+#include "vtkAVSPropertyTranslator.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkMatrix3x3.h"
+#include "vtkVolumeProperty.h"
 
 #include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
 
-// The data a vtkAVSVolumeMapper draws: the selected array and the mask converted and checked
-// when they changed, with the array's values left in the array where they can be
-// (vtkAVSDataTranslator::Volume::Deferred); what the GPU upload reads from it; and the host
-// copies that only the CPU's precomputation makes.
+// The scene a vtkAVSVolumeMapper draws (Internals' scene fields): the selected array and the
+// mask converted and checked when they changed, with the array's values left in the array where
+// they can be (vtkAVSDataTranslator::Volume::Deferred); what the GPU upload reads from it; the
+// host copies that only the CPU's precomputation makes; the property's classification and the
+// clip region, with the versions that invalidate what is built from them.
 
 namespace
 {
@@ -184,7 +188,7 @@ vtkImageData* vtkAVSVolumeMapper::PrepareInput()
     in.ArrayObject = array;
     in.ArrayTime = array->GetMTime();
     in.Selection = selection;
-    in.ScalarsUploaded = false;
+    ++in.ScalarsVersion;
     in.ContentKey = std::move(key);
     in.Fingerprints = std::move(prints);
     in.FingerprintSlices = slices;
@@ -277,7 +281,7 @@ void vtkAVSVolumeMapper::Internals::EnsureHostScalars()
   }
 }
 
-void vtkAVSVolumeMapper::UpdateExtinction()
+const avs::Grid& vtkAVSVolumeMapper::UpdateExtinction()
 {
   auto& in = *this->Internal;
   if (in.ExtinctionKey[0] != in.DataVersion || in.ExtinctionKey[1] != in.OpacityVersion)
@@ -287,4 +291,79 @@ void vtkAVSVolumeMapper::UpdateExtinction()
     in.ExtinctionKey[0] = in.DataVersion;
     in.ExtinctionKey[1] = in.OpacityVersion;
   }
+  return in.Extinction;
+}
+
+bool vtkAVSVolumeMapper::PrepareProperty(vtkVolumeProperty* property)
+{
+  auto& in = *this->Internal;
+  if (property == in.PropertyObject && property->GetMTime() == in.PropertyTime &&
+    this->GetMTime() == in.ClassificationTime)
+  {
+    return true;
+  }
+  std::string error, warning;
+  avs::MediumOptions& medium = in.Scene.Medium;
+  medium.Mask = medium.MaskValues.Values.empty()
+    ? avs::MaskType::None
+    : (this->MaskType == BinaryMaskType ? avs::MaskType::Binary : avs::MaskType::LabelMap);
+  medium.MaskBlendFactor = this->MaskBlendFactor;
+  if (!vtkAVSPropertyTranslator::ToMedium(property,
+        in.Ranges,
+        in.ScalarType,
+        medium.Mask == avs::MaskType::LabelMap,
+        in.Scene,
+        error,
+        warning))
+  {
+    in.PropertyObject = nullptr;
+    vtkErrorMacro("Cannot render: " << error);
+    return false;
+  }
+  if (!warning.empty())
+  {
+    vtkWarningMacro(<< warning << ".");
+  }
+  this->WarnAboutShading(property);
+  in.PropertyObject = property;
+  in.PropertyTime = property->GetMTime();
+  in.ClassificationTime = this->GetMTime();
+  ++in.TransferVersion;
+  // Extinction depends on the opacity alone: a change of colour alone rebuilds nothing.
+  std::vector<double> inputs = avs::ExtinctionKey(in.Scene);
+  if (inputs != in.ExtinctionInputs)
+  {
+    in.ExtinctionInputs = std::move(inputs);
+    ++in.OpacityVersion;
+  }
+  return true;
+}
+
+bool vtkAVSVolumeMapper::PrepareClip(vtkImageData* input, vtkMatrix4x4* dataToWorld)
+{
+  auto& in = *this->Internal;
+  std::string error;
+  // Clipping planes (world) and cropping (data coordinates) in the index frame.
+  avs::ClipRegion clip;
+  if (!vtkAVSClipTranslator::ToClipRegion(this->ClippingPlanes,
+        this->Cropping != 0,
+        this->CroppingRegionPlanes,
+        this->CroppingRegionFlags,
+        input,
+        in.Scene.Scalars.Geometry,
+        dataToWorld,
+        clip,
+        error))
+  {
+    vtkErrorMacro("Cannot render: " << error);
+    return false;
+  }
+  // The clip region is in the scene (its index frame); a change bumps OpacityVersion, since
+  // sigma_t depends on it (everything built from sigma_t is rebuilt).
+  if (clip != in.Scene.Clip)
+  {
+    in.Scene.Clip = clip;
+    ++in.OpacityVersion;
+  }
+  return true;
 }

@@ -72,7 +72,9 @@ bool vtkAVSVolumeMapper::ResolvePiece(vtkImageData* input, std::string& error)
   return true;
 }
 
-bool vtkAVSVolumeMapper::AverageAcrossPieces(const avs::GridGeometry& lightGrid, std::string& error)
+bool vtkAVSVolumeMapper::AverageAcrossPieces(const avs::GridGeometry& lightGrid,
+  avs::Grid& averaged,
+  std::string& error)
 {
   auto& in = *this->Internal;
   vtkMultiProcessController* controller = this->Controller;
@@ -86,11 +88,11 @@ bool vtkAVSVolumeMapper::AverageAcrossPieces(const avs::GridGeometry& lightGrid,
               "processes, UpdatePieceLighting must run on every process before each render";
       return false;
     }
-    in.Averaged = in.WholeSum;
+    averaged = in.WholeSum;
     return true;
   }
   // One process: the rest of the whole is empty space.
-  in.Averaged = avs::AverageExtinctionShare(
+  averaged = avs::AverageExtinctionShare(
     in.Extinction, in.PieceOffset, in.Whole, {}, in.Parameters.AmbientRadius, lightGrid);
   return true;
 }

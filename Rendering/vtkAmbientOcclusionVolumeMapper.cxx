@@ -1,10 +1,53 @@
 #include "vtkAmbientOcclusionVolumeMapper.h"
 
 #include "ScatteringParameters.h"
+#include "vtkAVSOcclusionVolume.h"
+#include "vtkAVSPrecomputeInputs.h"
 
 #include "vtkObjectFactory.h"
 
+#include <string>
+
 vtkStandardNewMacro(vtkAmbientOcclusionVolumeMapper);
+
+vtkAmbientOcclusionVolumeMapper::vtkAmbientOcclusionVolumeMapper()
+  : Occlusion(new vtkAVSOcclusionVolume)
+{
+}
+
+vtkAmbientOcclusionVolumeMapper::~vtkAmbientOcclusionVolumeMapper() = default;
+
+bool vtkAmbientOcclusionVolumeMapper::PrepareLighting(const vtkAVSPrecomputeInputs& inputs)
+{
+  std::string error;
+  if (!this->Occlusion->Update(inputs, error))
+  {
+    vtkErrorMacro("Cannot render: " << error);
+    return false;
+  }
+  return true;
+}
+
+void vtkAmbientOcclusionVolumeMapper::InvalidateLighting()
+{
+  this->Occlusion->Invalidate();
+}
+
+void vtkAmbientOcclusionVolumeMapper::GetPrecomputedGrids(std::array<int, 3>&,
+  std::array<int, 3>& occlusionGrid) const
+{
+  occlusionGrid = this->Occlusion->GetDimensions();
+}
+
+vtkTypeBool vtkAmbientOcclusionVolumeMapper::GetOcclusionOnGPU()
+{
+  return this->Occlusion->GetOnGPU() ? 1 : 0;
+}
+
+int vtkAmbientOcclusionVolumeMapper::GetNumberOfOcclusionRebuilds()
+{
+  return this->Occlusion->GetNumberOfRebuilds();
+}
 
 void vtkAmbientOcclusionVolumeMapper::FillParameters(avs::ScatteringParameters& p)
 {

@@ -13,6 +13,10 @@
 
 #include "vtkAVSVolumeMapper.h"
 
+#include <memory> // for std::unique_ptr
+
+class vtkAVSOcclusionVolume;
+
 class VTKRENDERINGAMBIENTSCATTERING_EXPORT vtkAmbientOcclusionVolumeMapper
   : public vtkAVSVolumeMapper
 {
@@ -82,11 +86,23 @@ public:
   vtkGetMacro(LightScale, double);
   ///@}
 
+  ///@{
+  /**
+   * Whether the last occlusion volume was computed on the GPU, and how often it was rebuilt.
+   */
+  vtkTypeBool GetOcclusionOnGPU() override;
+  int GetNumberOfOcclusionRebuilds() override;
+  ///@}
+
 protected:
-  vtkAmbientOcclusionVolumeMapper() = default;
-  ~vtkAmbientOcclusionVolumeMapper() override = default;
+  vtkAmbientOcclusionVolumeMapper();
+  ~vtkAmbientOcclusionVolumeMapper() override;
   int GetEffect() const override { return 1; }
   void FillParameters(avs::ScatteringParameters& parameters) override;
+  bool PrepareLighting(const vtkAVSPrecomputeInputs& inputs) override;
+  void InvalidateLighting() override;
+  void GetPrecomputedGrids(std::array<int, 3>& lightGrid,
+    std::array<int, 3>& occlusionGrid) const override;
 
   double OcclusionRadius = 0.0;
   int NumberOfDirections = 32;
@@ -99,6 +115,8 @@ protected:
 private:
   vtkAmbientOcclusionVolumeMapper(const vtkAmbientOcclusionVolumeMapper&) = delete;
   void operator=(const vtkAmbientOcclusionVolumeMapper&) = delete;
+
+  std::unique_ptr<vtkAVSOcclusionVolume> Occlusion; ///< the occlusion volume's owner
 };
 
 #endif

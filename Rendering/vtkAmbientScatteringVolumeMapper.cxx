@@ -1,6 +1,8 @@
 #include "vtkAmbientScatteringVolumeMapper.h"
 
 #include "ScatteringParameters.h"
+#include "vtkAVSPrecomputeInputs.h"
+#include "vtkAVSScatteringVolumes.h"
 #include "vtkAmbientScatteringTable.h"
 
 #include "vtkObjectFactory.h"
@@ -11,6 +13,7 @@ vtkStandardNewMacro(vtkAmbientScatteringVolumeMapper);
 
 vtkAmbientScatteringVolumeMapper::vtkAmbientScatteringVolumeMapper()
   : Table(vtkAmbientScatteringTable::New())
+  , Volumes(new vtkAVSScatteringVolumes)
 {
   // The display transform's defaults for lit, multiply scattering media (see the header).
   this->Exposure = DefaultExposure;
@@ -50,6 +53,53 @@ const avs::ScatteringTable* vtkAmbientScatteringVolumeMapper::GetScatteringTable
     return nullptr;
   }
   return this->Table->GetTable();
+}
+
+bool vtkAmbientScatteringVolumeMapper::PrepareLighting(const vtkAVSPrecomputeInputs& inputs)
+{
+  const avs::ScatteringTable* table = this->GetScatteringTable();
+  if (!table)
+  {
+    return false; // GetScatteringTable reported why
+  }
+  std::string error;
+  if (!this->Volumes->Update(inputs, *table, error))
+  {
+    vtkErrorMacro("Cannot render: " << error);
+    return false;
+  }
+  return true;
+}
+
+void vtkAmbientScatteringVolumeMapper::InvalidateLighting()
+{
+  this->Volumes->Invalidate();
+}
+
+void vtkAmbientScatteringVolumeMapper::GetPrecomputedGrids(std::array<int, 3>& lightGrid,
+  std::array<int, 3>&) const
+{
+  lightGrid = this->Volumes->GetLightGridDimensions();
+}
+
+vtkTypeBool vtkAmbientScatteringVolumeMapper::GetLightVolumesOnGPU()
+{
+  return this->Volumes->GetLightVolumesOnGPU() ? 1 : 0;
+}
+
+int vtkAmbientScatteringVolumeMapper::GetNumberOfExtinctionRebuilds()
+{
+  return this->Volumes->GetNumberOfExtinctionRebuilds();
+}
+
+int vtkAmbientScatteringVolumeMapper::GetNumberOfLightVolumeRebuilds()
+{
+  return this->Volumes->GetNumberOfLightVolumeRebuilds();
+}
+
+int vtkAmbientScatteringVolumeMapper::GetNumberOfDiffusionRebuilds()
+{
+  return this->Volumes->GetNumberOfDiffusionRebuilds();
 }
 
 void vtkAmbientScatteringVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)

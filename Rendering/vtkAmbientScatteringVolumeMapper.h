@@ -27,6 +27,13 @@
 
 #include "vtkAVSVolumeMapper.h"
 
+#include <memory> // for std::unique_ptr
+
+namespace avs
+{
+class ScatteringTable;
+}
+class vtkAVSScatteringVolumes;
 class vtkAmbientScatteringTable;
 
 class VTKRENDERINGAMBIENTSCATTERING_EXPORT vtkAmbientScatteringVolumeMapper
@@ -185,12 +192,29 @@ public:
   vtkGetStringMacro(ScatteringTableFileName);
   ///@}
 
+  ///@{
+  /**
+   * Whether the last light volumes were computed on the GPU, and how often the averaged
+   * extinction, a light volume (one count per light) and the extended model's diffusion were
+   * rebuilt.
+   */
+  vtkTypeBool GetLightVolumesOnGPU() override;
+  int GetNumberOfExtinctionRebuilds() override;
+  int GetNumberOfLightVolumeRebuilds() override;
+  int GetNumberOfDiffusionRebuilds() override;
+  ///@}
+
 protected:
   vtkAmbientScatteringVolumeMapper();
   ~vtkAmbientScatteringVolumeMapper() override;
   int GetEffect() const override { return 2; }
   void FillParameters(avs::ScatteringParameters& parameters) override;
-  const avs::ScatteringTable* GetScatteringTable() override;
+  bool PrepareLighting(const vtkAVSPrecomputeInputs& inputs) override;
+  void InvalidateLighting() override;
+  void GetPrecomputedGrids(std::array<int, 3>& lightGrid,
+    std::array<int, 3>& occlusionGrid) const override;
+  /// The loaded scattering table, or nullptr after reporting an error.
+  const avs::ScatteringTable* GetScatteringTable();
 
   double AmbientRadius = 0.0;
   double Anisotropy = 0.0;
@@ -206,6 +230,8 @@ protected:
 private:
   vtkAmbientScatteringVolumeMapper(const vtkAmbientScatteringVolumeMapper&) = delete;
   void operator=(const vtkAmbientScatteringVolumeMapper&) = delete;
+
+  std::unique_ptr<vtkAVSScatteringVolumes> Volumes; ///< the precomputed volumes' owner
 };
 
 #endif
