@@ -327,15 +327,8 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
       nullptr,
       [this](double v) { this->UpdateProgress(v); },
       &squares);
-    this->WriteOutput(output, image, scene.Background, this->ResolveDisplay(scene));
-    // The samples' second moment, for the variance of the estimate (the tests of the GPU path
-    // tracer).
-    vtkNew<vtkFloatArray> second;
-    second->SetName("RadianceSecondMoment");
-    second->SetNumberOfComponents(4);
-    second->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
-    std::copy(squares.Pixels.begin(), squares.Pixels.end(), second->GetPointer(0));
-    output->GetPointData()->AddArray(second);
+    // (With the samples' second moment, for the variance of the estimate.)
+    this->WriteOutput(output, image, &squares, scene.Background, this->ResolveDisplay(scene));
     this->UpdateProgress(1.0);
     return 1;
   }
@@ -360,7 +353,7 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
     h,
     [this](double v) { this->UpdateProgress(0.5 + 0.5 * v); });
 
-  this->WriteOutput(output, image, scene.Background, this->ResolveDisplay(scene));
+  this->WriteOutput(output, image, nullptr, scene.Background, this->ResolveDisplay(scene));
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -388,6 +381,7 @@ avs::DisplayTransform vtkVolumeReferenceRenderer::ResolveDisplay(const avs::Volu
 
 void vtkVolumeReferenceRenderer::WriteOutput(vtkImageData* output,
   const avs::Image& image,
+  const avs::Image* squares,
   const avs::Vec3& background,
   const avs::DisplayTransform& display)
 {
@@ -403,6 +397,10 @@ void vtkVolumeReferenceRenderer::WriteOutput(vtkImageData* output,
   radiance->SetName("Radiance");
   radiance->SetNumberOfComponents(4);
   radiance->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  vtkNew<vtkFloatArray> second;
+  second->SetName("RadianceSecondMoment");
+  second->SetNumberOfComponents(4);
+  second->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
   for (int y = 0; y < h; ++y)
   {
     for (int x = 0; x < w; ++x)
@@ -418,14 +416,17 @@ void vtkVolumeReferenceRenderer::WriteOutput(vtkImageData* output,
         rgb->SetTypedComponent(id, k, static_cast<unsigned char>(std::lround(255.0 * v)));
       }
       const float* p = image.At(x, y);
+      const float* q = squares ? squares->At(x, y) : nullptr;
       for (int k = 0; k < 4; ++k)
       {
         radiance->SetTypedComponent(id, k, p[k]);
+        second->SetTypedComponent(id, k, q ? q[k] : p[k] * p[k]);
       }
     }
   }
   output->GetPointData()->SetScalars(rgb);
   output->GetPointData()->AddArray(radiance);
+  output->GetPointData()->AddArray(second);
 }
 
 void vtkVolumeReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)

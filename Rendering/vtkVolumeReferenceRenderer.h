@@ -12,8 +12,10 @@
  *
  * The output has ImageSize pixels, 3-component unsigned char scalars "RGB" (the volume
  * composited over Background) and a 4-component float array "Radiance" (premultiplied radiance
- * and alpha = 1 - transmittance); path tracing adds "RadianceSecondMoment", the mean of the
- * squares of the samples (alpha: of the 0/1 hits), from which the estimate's variance follows.
+ * and alpha = 1 - transmittance) and "RadianceSecondMoment", the mean of the squares of the
+ * samples (alpha: of the 0/1 hits), from which the estimate's variance follows: for path tracing
+ * the samples', for the deterministic modes the square of "Radiance" (no variance). Every mode
+ * gives the same arrays, so outputs of different modes append side by side (vtkImageAppend).
  *
  * Clipping planes and cropping (as a vtkVolumeMapper's) remove material for every purpose.
  * NaN voxels are empty space, infinities are clamped (one warning counts them).
@@ -442,8 +444,12 @@ protected:
   int CroppingRegionFlags = 0x0002000;
 
 private:
+  /// The output's arrays, the same in every mode: "RGB", "Radiance" and
+  /// "RadianceSecondMoment" (`squares`: the path tracer's; null: the deterministic modes',
+  /// the squares of the radiance).
   void WriteOutput(vtkImageData* output,
     const avs::Image& image,
+    const avs::Image* squares,
     const avs::Vec3& background,
     const avs::DisplayTransform& display);
   /// The display transform of this render: the mode's defaults where automatic, the metered

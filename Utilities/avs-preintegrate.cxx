@@ -202,9 +202,10 @@ int main(int argc, char* argv[])
   }
 
   const auto start = std::chrono::steady_clock::now();
+  bool progressOpen = false; // a progress line not yet ended by a newline
   if (!quiet)
   {
-    settings.Progress = [start](std::size_t done, std::size_t all)
+    settings.Progress = [start, &progressOpen](std::size_t done, std::size_t all)
     {
       const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -216,6 +217,7 @@ int main(int argc, char* argv[])
         100.0 * done / all,
         elapsed,
         eta);
+      progressOpen = done != all;
       if (done == all)
       {
         std::fprintf(stderr, "\n");
@@ -240,6 +242,10 @@ int main(int argc, char* argv[])
   }
   avs::PreintegrationStatistics stats;
   const avs::ScatteringTable table = avs::Preintegrate(settings, &stats);
+  if (progressOpen)
+  {
+    std::fprintf(stderr, "\n"); // the progress stopped short of the last cell
+  }
   std::string error;
   if (!table.Write(output, &error))
   {

@@ -37,15 +37,78 @@ bool EndsWith(const std::string& s, const std::string& suffix)
       [](char a, char b) { return std::tolower(a) == std::tolower(b); });
 }
 
-// Lights and camera placed relative to the volume's bounds: a warm point light at the centre,
-// a cool directional light from the upper left, a camera looking at the centre.
-void PlaceLightsAndCamera(DemoScene& scene)
+// The world bounds of the samples whose first component exceeds `threshold` (the part of the
+// volume the transfer function shows); the image's bounds where none does.
+void VisibleBounds(vtkImageData* volume, double threshold, double b[6])
 {
-  double b[6];
+  volume->GetBounds(b);
+  vtkDataArray* scalars = volume->GetPointData()->GetScalars();
+  int dims[3];
+  volume->GetDimensions(dims);
+  int lo[3] = { dims[0], dims[1], dims[2] }, hi[3] = { -1, -1, -1 };
+  vtkIdType id = 0;
+  for (int k = 0; k < dims[2]; ++k)
+    for (int j = 0; j < dims[1]; ++j)
+      for (int i = 0; i < dims[0]; ++i, ++id)
+      {
+        if (scalars->GetComponent(id, 0) > threshold)
+        {
+          const int ijk[3] = { i, j, k };
+          for (int a = 0; a < 3; ++a)
+          {
+            lo[a] = std::min(lo[a], ijk[a]);
+            hi[a] = std::max(hi[a], ijk[a]);
+          }
+        }
+      }
+  if (hi[0] < 0)
+  {
+    return;
+  }
+  // The box's eight corners, one voxel to spare, through the image's placement.
+  const int* e = volume->GetExtent();
+  for (int a = 0; a < 3; ++a)
+  {
+    b[2 * a] = VTK_DOUBLE_MAX;
+    b[2 * a + 1] = VTK_DOUBLE_MIN;
+  }
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    double index[3], point[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const int first = std::max(0, lo[a] - 1), last = std::min(dims[a] - 1, hi[a] + 1);
+      index[a] = e[2 * a] + ((corner >> a) & 1 ? last : first);
+    }
+    volume->TransformContinuousIndexToPhysicalPoint(index, point);
+    for (int a = 0; a < 3; ++a)
+    {
+      b[2 * a] = std::min(b[2 * a], point[a]);
+      b[2 * a + 1] = std::max(b[2 * a + 1], point[a]);
+    }
+  }
+}
+
+// The centre and the radius of the sphere around bounds.
+void BoundingSphere(const double b[6], double centre[3], double& radius)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    centre[a] = 0.5 * (b[2 * a] + b[2 * a + 1]);
+  }
+  radius = 0.5 *
+    std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+      (b[5] - b[4]) * (b[5] - b[4]));
+}
+
+// The nebula's lights and camera: a warm point light at its hollow centre, a cool directional
+// light from the upper left, a camera looking at the centre.
+void PlaceNebulaLightsAndCamera(DemoScene& scene)
+{
+  double b[6], c[3], radius;
   scene.Volume->GetBounds(b);
-  const double c[3] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };
-  const double size = std::sqrt(
-    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+  BoundingSphere(b, c, radius);
+  const double size = 2.0 * radius;
 
   scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
   vtkNew<vtkLight> point;
@@ -73,6 +136,52 @@ void PlaceLightsAndCamera(DemoScene& scene)
   camera->SetPosition(c[0] + 0.2 * size, c[1] + 0.27 * size, c[2] + 1.0 * size);
   camera->SetViewUp(0, 1, 0);
   camera->SetViewAngle(30.0);
+}
+
+// A user's file, whose inside may be dense (a light there would be buried) and whose shape may
+// be long: the camera frames the sphere around what the transfer function shows (above
+// `threshold`) whole, a warm key light from the upper left front makes the shadows and the
+// glow, a cool fill from the lower right keeps the far side from black. Directional lights: the
+// same light wherever the material is.
+void PlaceFileLightsAndCamera(DemoScene& scene, double threshold)
+{
+  double b[6], c[3], radius;
+  VisibleBounds(scene.Volume, threshold, b);
+  BoundingSphere(b, c, radius);
+  radius = radius > 0.0 ? radius : 1.0;
+  const double viewAngle = 30.0;
+
+  scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  vtkNew<vtkLight> key;
+  key->SetLightTypeToSceneLight();
+  key->SetPositional(false);
+  key->SetPosition(c[0] - radius, c[1] + 1.2 * radius, c[2] + 0.8 * radius);
+  key->SetFocalPoint(c);
+  key->SetDiffuseColor(1.0, 0.9, 0.75);
+  key->SetIntensity(1.0);
+  scene.Renderer->AddLight(key);
+
+  vtkNew<vtkLight> fill;
+  fill->SetLightTypeToSceneLight();
+  fill->SetPositional(false);
+  fill->SetPosition(c[0] + radius, c[1] - 0.3 * radius, c[2] + 0.6 * radius);
+  fill->SetFocalPoint(c);
+  fill->SetDiffuseColor(0.65, 0.75, 1.0);
+  fill->SetIntensity(0.35);
+  scene.Renderer->AddLight(fill);
+
+  // The whole sphere in view: its radius over the sine of half the view angle, 5 % to spare.
+  const double distance = 1.05 * radius / std::sin(0.5 * viewAngle * 3.14159265358979 / 180.0);
+  const double direction[3] = { 0.2, 0.27, 1.0 };
+  const double length = std::sqrt(
+    direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  camera->SetFocalPoint(c);
+  camera->SetPosition(c[0] + distance * direction[0] / length,
+    c[1] + distance * direction[1] / length,
+    c[2] + distance * direction[2] / length);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(viewAngle);
 }
 } // namespace
 
@@ -106,7 +215,7 @@ DemoScene MakeDemoScene(int n)
   scene.Property->SetScalarOpacity(opacity);
   scene.Property->SetScalarOpacityUnitDistance(2.0 / 48.0);
   scene.Property->SetInterpolationTypeToLinear();
-  PlaceLightsAndCamera(scene);
+  PlaceNebulaLightsAndCamera(scene);
   return scene;
 }
 
@@ -190,6 +299,6 @@ bool LoadDemoScene(const std::string& fileName, DemoScene& scene, std::string& e
   image->GetSpacing(spacing);
   scene.Property->SetScalarOpacityUnitDistance(
     2.0 * std::max({ spacing[0], spacing[1], spacing[2] }));
-  PlaceLightsAndCamera(scene);
+  PlaceFileLightsAndCamera(scene, lo + 0.1 * (hi - lo));
   return true;
 }

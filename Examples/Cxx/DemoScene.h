@@ -1,6 +1,6 @@
 // The built-in demo scene: a procedural nebula lit by a point light at its hollow centre and a
-// directional light from the side, with its transfer functions and camera; or a user's file
-// with the same lights placed relative to its bounds.
+// directional light from the side, with its transfer functions and camera; or a user's file,
+// framed whole and lit from outside by a key and a fill light.
 #ifndef DemoScene_h
 #define DemoScene_h
 

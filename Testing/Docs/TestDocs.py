@@ -164,7 +164,7 @@ def build_cxx(page, cmake, sources, args, scratch, env, failures):
     if not args.installed:
         failures.append(f"{where}: no installed package given (--installed)")
         return
-    project = os.path.join(scratch, "cxx")
+    project = os.path.join(scratch, "cxx-" + re.sub(r"[^A-Za-z0-9]+", "-", page))
     os.makedirs(project, exist_ok=True)
     with open(os.path.join(project, "CMakeLists.txt"), "w", encoding="utf-8") as f:
         f.write(cmake.text + "\n")

@@ -1,6 +1,8 @@
 # The installed package, the way a user consumes it (ctest: Install.Package). Installs the build
 # into a fresh prefix, moves the tree elsewhere (it must be relocatable), builds the Consumer
-# project with find_package(AmbientScattering) against the moved tree and runs it, then runs
+# project with find_package(AmbientScattering) against the moved tree in each way users write
+# it (the order of the two find_package calls, VTK's components, VTK_LIBRARIES or targets) and
+# runs each, then runs
 # TestInstalledPython.py with only the moved tree's Python folder on PYTHONPATH and nothing of the
 # source or build folders in the environment.
 #
@@ -46,12 +48,33 @@ if (SANITIZER_LINK_FLAG)
   set(consumer_environment "ASAN_OPTIONS=detect_leaks=0")
 endif ()
 
-run("configuring the consumer" ${clean} "${CMAKE_COMMAND}" -S "${SOURCE}/Testing/Install/Consumer"
-  -B "${WORK}/consumer" -DCMAKE_BUILD_TYPE=Release "-DCMAKE_PREFIX_PATH=${prefix}"
-  ${consumer_options})
-run("building the consumer" ${clean} "${CMAKE_COMMAND}" --build "${WORK}/consumer")
-run("the consumer's frame" ${clean} ${consumer_environment} "${WORK}/consumer/RenderOneFrame"
-  "${prefix}")
+# The consumers, in the ways users write them (Testing/Install/Consumer/CMakeLists.txt): the
+# package found before or after VTK, VTK's targets named or ${VTK_LIBRARIES} linked, with the
+# README's components, the ones most VTK applications ask for (ImagingCore and IOImage too:
+# the consumer uses a VTK source, so a VTK_LIBRARIES the package replaced fails to link), and
+# with ParallelMPI.
+set(readme "RenderingOpenGL2,RenderingVolumeOpenGL2,InteractionStyle")
+set(common "RenderingCore,RenderingOpenGL2,RenderingVolumeOpenGL2,ImagingCore,IOImage,InteractionStyle")
+set(mpi "RenderingOpenGL2,RenderingVolumeOpenGL2,InteractionStyle,ParallelMPI")
+set(consumers
+  "readme|avs-first|targets|${readme}"
+  "common-vtk-first|vtk-first|libraries|${common}"
+  "common-avs-first|avs-first|libraries|${common}"
+  "mpi-vtk-first|vtk-first|targets|${mpi}"
+  "mpi-avs-first|avs-first|libraries|${mpi}")
+foreach (consumer IN LISTS consumers)
+  string(REPLACE "|" ";" fields "${consumer}")
+  list(POP_FRONT fields name order link components) # (commas: run() would split a list)
+  set(dir "${WORK}/consumer-${name}")
+  message("consumer ${name}: ${order}, ${link}, VTK components ${components}")
+  run("configuring the consumer ${name}" ${clean} "${CMAKE_COMMAND}"
+    -S "${SOURCE}/Testing/Install/Consumer" -B "${dir}" -DCMAKE_BUILD_TYPE=Release
+    "-DCMAKE_PREFIX_PATH=${prefix}" "-DAVS_CONSUMER_ORDER=${order}"
+    "-DAVS_CONSUMER_LINK=${link}" "-DAVS_CONSUMER_COMPONENTS=${components}" ${consumer_options})
+  run("building the consumer ${name}" ${clean} "${CMAKE_COMMAND}" --build "${dir}")
+  run("the consumer ${name}'s frame" ${clean} ${consumer_environment} "${dir}/RenderOneFrame"
+    "${prefix}")
+endforeach ()
 run("the installed Python package" ${clean} ${PYTHON_ENVIRONMENT}
   "PYTHONPATH=${prefix}/${PYTHON_DESTINATION}"
   "PYTHONDONTWRITEBYTECODE=1" "${PYTHON}" "${SOURCE}/Testing/Install/TestInstalledPython.py"

@@ -3,6 +3,7 @@ the renderer's lights and camera, checked pixel by pixel; bad input gives an err
 import sys
 
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
+from vtkmodules.vtkFiltersCore import vtkImageAppend
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkLight, vtkRenderer,
                                          vtkVolumeProperty)
@@ -92,6 +93,42 @@ def main():
     traced = filt.GetOutput().GetPointData().GetArray("Radiance")
     check(first == [traced.GetComponent(i, 0) for i in range(traced.GetNumberOfTuples())],
           "path tracing: the same seed gave another picture")
+
+    # The four modes side by side, as a user compares them (avs-demo --reference does for
+    # three): every mode's output has the same arrays, so vtkImageAppend takes them in any order
+    # (VTK 9.1's crashed on outputs whose arrays differ).
+    append = vtkImageAppend()
+    append.SetAppendAxis(0)
+    pictures = {}
+    for mode in ("AmbientScattering", "PathTracing", "EmissionAbsorption", "AmbientOcclusion"):
+        getattr(filt, "SetRenderModeTo" + mode)()
+        filt.Update()
+        copy = vtkImageData()
+        copy.DeepCopy(filt.GetOutput())
+        pd = copy.GetPointData()
+        names = [pd.GetArrayName(i) for i in range(pd.GetNumberOfArrays())]
+        check(names == ["RGB", "Radiance", "RadianceSecondMoment"],
+              mode + ": arrays %s" % names)
+        second = pd.GetArray("RadianceSecondMoment")
+        radiance = pd.GetArray("Radiance")
+        if mode != "PathTracing" and second is not None:
+            # No variance: the second moment is the square of the radiance.
+            check(all(abs(second.GetComponent(i, c) - radiance.GetComponent(i, c) ** 2) < 1e-6
+                      for i in range(0, second.GetNumberOfTuples(), 37) for c in range(4)),
+                  mode + ": second moment is not the squared radiance")
+        pictures[mode] = copy
+        append.AddInputData(copy)
+    append.Update()
+    side = append.GetOutput()
+    check(side.GetDimensions() == (160, 40, 1), "side by side: size %s" % (side.GetDimensions(),))
+    for k, mode in enumerate(("AmbientScattering", "PathTracing", "EmissionAbsorption",
+                              "AmbientOcclusion")):
+        check(all(side.GetScalarComponentAsDouble(40 * k + x, 20, 0, c)
+                  == pictures[mode].GetScalarComponentAsDouble(x, 20, 0, c)
+                  for x in range(40) for c in range(3)), "side by side: %s's panel" % mode)
+    check(side.GetPointData().GetArray("RadianceSecondMoment") is not None,
+          "side by side: the second moment was dropped")
+    filt.SetSamplesPerPixel(8)
 
     # More albedo, more scattered light.
     filt.SetRenderModeToAmbientScattering()

@@ -1,11 +1,15 @@
 // One frame of a ball with vtkAmbientScatteringVolumeMapper, from an installed package. Argument:
-// the installed prefix, under which the shipped scattering table must have been found.
+// the installed prefix, under which the shipped scattering table must have been found. Built with
+// ImagingCore among the VTK components, the ball is a VTK source's (vtkRTAnalyticSource's field
+// thresholded); with ParallelMPI the mapper gets a vtkMPIController (not initialised: one
+// process).
 #include "vtkAmbientScatteringTable.h"
 #include "vtkAmbientScatteringVolumeMapper.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
+#include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -16,6 +20,12 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+#ifdef AVS_CONSUMER_IMAGING
+#include "vtkRTAnalyticSource.h"
+#endif
+#ifdef AVS_CONSUMER_MPI
+#include "vtkMPIController.h"
+#endif
 
 #include <cmath>
 #include <iostream>
@@ -44,6 +54,17 @@ int main(int argc, char* argv[])
         s->SetValue((k * 32 + j) * 32 + i, r < 12 ? 1.0f : 0.0f);
       }
   image->GetPointData()->SetScalars(s);
+#ifdef AVS_CONSUMER_IMAGING
+  // The same ball from a VTK source: the wavelet's field, above its mean inside the ball.
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(0, 31, 0, 31, 0, 31);
+  wavelet->Update();
+  vtkDataArray* field = wavelet->GetOutput()->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < field->GetNumberOfTuples(); ++i)
+  {
+    s->SetValue(i, s->GetValue(i) * static_cast<float>(field->GetComponent(i, 0) > 0.0));
+  }
+#endif
   vtkNew<vtkVolumeProperty> property;
   vtkNew<vtkColorTransferFunction> color;
   color->AddRGBPoint(0, 1, 0.8, 0.6);
@@ -55,6 +76,10 @@ int main(int argc, char* argv[])
   property->SetScalarOpacity(opacity);
   vtkNew<vtkAmbientScatteringVolumeMapper> mapper;
   mapper->SetInputData(image);
+#ifdef AVS_CONSUMER_MPI
+  vtkNew<vtkMPIController> controller;
+  mapper->SetController(controller);
+#endif
   int errors = 0;
   vtkNew<vtkCallbackCommand> count;
   count->SetClientData(&errors);
