@@ -93,7 +93,7 @@ bool vtkAVSVolumeMapper::AverageAcrossPieces(const avs::GridGeometry& lightGrid,
   }
   // One process: the rest of the whole is empty space.
   averaged = avs::AverageExtinctionShare(
-    in.Extinction, in.PieceOffset, in.Whole, {}, in.Parameters.AmbientRadius, lightGrid);
+    this->UpdateExtinction(), in.PieceOffset, in.Whole, {}, in.Parameters.AmbientRadius, lightGrid);
   return true;
 }
 

@@ -216,7 +216,11 @@ int RenderWithMappers(DemoScene& scene,
   {
     const double reference = MeasurePanel(grab->GetOutput(), size, 0).Mean;
     const double ours = MeasurePanel(grab->GetOutput(), size, 2).Mean;
-    const double ratio = reference > 0.0 && ours > 0.0 ? ours / reference : 1.0;
+    if (reference <= 0.0 || (ours <= 0.0 && as->GetExposure() >= 64.0))
+    {
+      break; // nothing to meter against, or nothing the exposure can bring out
+    }
+    const double ratio = ours > 0.0 ? ours / reference : 1.0 / 64.0; // black: the most exposure
     if (ratio > 0.8 && ratio < 1.25)
     {
       break;

@@ -97,7 +97,7 @@ def main():
         output = os.path.join(work, re.sub(r'[^A-Za-z0-9_]+', '_', name))
         run = subprocess.run([demo, '--size', str(SIZE), '--output', output, path],
                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                             timeout=600)
+                             timeout=300)
         if run.returncode != 0:
             failures.append('%s: avs-demo exited with %d:\n%s' % (name, run.returncode, run.stdout))
             continue

@@ -1,8 +1,8 @@
 // One frame of a ball with vtkAmbientScatteringVolumeMapper, from an installed package. Argument:
 // the installed prefix, under which the shipped scattering table must have been found. Built with
-// ImagingCore among the VTK components, the ball is a VTK source's (vtkRTAnalyticSource's field
-// thresholded); with ParallelMPI the mapper gets a vtkMPIController (not initialised: one
-// process).
+// ImagingCore among the VTK components, the ball is cut by a VTK source (vtkRTAnalyticSource's
+// field above the middle of its range); with ParallelMPI the mapper gets a vtkMPIController (not
+// initialised: one process).
 #include "vtkAmbientScatteringTable.h"
 #include "vtkAmbientScatteringVolumeMapper.h"
 
@@ -55,14 +55,17 @@ int main(int argc, char* argv[])
       }
   image->GetPointData()->SetScalars(s);
 #ifdef AVS_CONSUMER_IMAGING
-  // The same ball from a VTK source: the wavelet's field, above its mean inside the ball.
+  // The ball cut by a VTK source: the wavelet's field above the middle of its range.
   vtkNew<vtkRTAnalyticSource> wavelet;
   wavelet->SetWholeExtent(0, 31, 0, 31, 0, 31);
   wavelet->Update();
   vtkDataArray* field = wavelet->GetOutput()->GetPointData()->GetScalars();
+  double range[2];
+  field->GetRange(range);
+  const double middle = 0.5 * (range[0] + range[1]);
   for (vtkIdType i = 0; i < field->GetNumberOfTuples(); ++i)
   {
-    s->SetValue(i, s->GetValue(i) * static_cast<float>(field->GetComponent(i, 0) > 0.0));
+    s->SetValue(i, s->GetValue(i) * static_cast<float>(field->GetComponent(i, 0) > middle));
   }
 #endif
   vtkNew<vtkVolumeProperty> property;
