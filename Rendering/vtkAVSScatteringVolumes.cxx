@@ -32,16 +32,12 @@ bool vtkAVSScatteringVolumes::Update(const vtkAVSPrecomputeInputs& inputs,
 {
   vtkAVSRayCaster& caster = *inputs.RayCaster;
   const avs::ScatteringParameters& rp = *inputs.Parameters;
-  // With compute shaders no extinction grid is needed on the CPU. (The GPU light-volume pass
-  // takes tables of up to MaximumTauNodes tau nodes; larger user tables are marched on the CPU.)
+  // With compute shaders no extinction grid is needed on the CPU: the averaged extinction asks
+  // for sigma_t where it is computed on the CPU (no compute shaders, a piece of a larger whole, a
+  // split volume). (The GPU light-volume pass takes tables of up to MaximumTauNodes tau nodes;
+  // larger user tables are marched on the CPU.)
   const bool gpu = inputs.PrecomputeOnGPU && caster.SupportsComputeShaders() &&
     table.Axes.NumberOfTau <= vtkAVSRayCaster::MaximumTauNodes;
-  // (A piece of a larger whole computes its share of the averaged extinction on the CPU, and so
-  // does a split volume: the GPU pass reads the unsplit scalars' texture.)
-  if (!gpu || inputs.LitAsPiece || caster.IsBricked())
-  {
-    inputs.Extinction();
-  }
   if (!this->UpdateSlice(inputs, table, error))
   {
     return false;
