@@ -2,6 +2,7 @@
 
 #include "vtkColorTransferFunction.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkRenderer.h"
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
@@ -300,4 +301,22 @@ bool vtkAVSPropertyTranslator::ToMedium(vtkVolumeProperty* property,
     }
   }
   return true;
+}
+
+avs::SurfaceShading vtkAVSPropertyTranslator::ToSurface(vtkVolumeProperty* property,
+  double blending,
+  vtkRenderer* renderer)
+{
+  avs::SurfaceShading s;
+  s.Blending = blending;
+  s.TwoSided = !renderer || renderer->GetTwoSidedLighting() != 0;
+  if (property)
+  {
+    s.Shade = property->GetShade(0) != 0;
+    s.Ambient = property->GetAmbient(0);
+    s.Diffuse = property->GetDiffuse(0);
+    s.Specular = property->GetSpecular(0);
+    s.SpecularPower = property->GetSpecularPower(0);
+  }
+  return s;
 }

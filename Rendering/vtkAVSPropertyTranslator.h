@@ -13,7 +13,8 @@
  * component, as in VTK); independent components (each its own functions, unit distance and
  * component weight); gradient opacity (SetGradientOpacity, DisableGradientOpacity) over a
  * quarter of the component's range, as VTK's table; the interpolation type; the label functions
- * of a label-map mask (SetLabelColor, SetLabelScalarOpacity).
+ * of a label-map mask (SetLabelColor, SetLabelScalarOpacity). ToSurface reads the shading
+ * (ShadeOn and the Phong coefficients) for surfaces inside the medium.
  */
 #ifndef vtkAVSPropertyTranslator_h
 #define vtkAVSPropertyTranslator_h
@@ -24,6 +25,7 @@
 #include <string>
 #include <vector>
 
+class vtkRenderer;
 class vtkVolumeProperty;
 
 class vtkAVSPropertyTranslator
@@ -46,6 +48,13 @@ public:
     avs::VolumeScene& scene,
     std::string& error,
     std::string& warning);
+
+  /// Surfaces inside the medium (avs/SurfaceShading.h): component 0's ShadeOn and Phong
+  /// coefficients (as vtkGPUVolumeRayCastMapper reads them for one component), the blending
+  /// (VolumetricScatteringBlending) and the renderer's TwoSidedLighting (on without a renderer).
+  static avs::SurfaceShading ToSurface(vtkVolumeProperty* property,
+    double blending,
+    vtkRenderer* renderer);
 
   /// Samples the colour and scalar-opacity functions of component `index` over [lo, hi] (an
   /// empty range is widened to [lo, lo + 1]).

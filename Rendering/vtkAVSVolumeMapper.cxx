@@ -6,6 +6,7 @@
 #include "ScatteringParameters.h"
 #include "vtkAVSDataTranslator.h"
 #include "vtkAVSPrecomputeInputs.h"
+#include "vtkAVSPropertyTranslator.h"
 #include "vtkAVSRayCaster.h"
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSSceneTranslator.h"
@@ -135,6 +136,12 @@ bool vtkAVSVolumeMapper::PrepareScene(vtkVolume* volume)
     this->ToneMapping == ShoulderToneMapping ? avs::ToneMapping::Shoulder : avs::ToneMapping::Clamp;
   p.AutoExposure = this->AutoExposure != 0;
   this->FillParameters(p);
+  if (this->GetEffect() == 2)
+  {
+    // Surfaces inside the medium: the property's shading with the subclass's blending (two
+    // sides until Prepare reads the renderer's TwoSidedLighting).
+    p.Surface = vtkAVSPropertyTranslator::ToSurface(property, p.Surface.Blending, nullptr);
+  }
   in.Parameters = p.Resolve(in.Whole); // the automatic radius: the whole image's
 
   // Transforms: data -> world is the volume's matrix; index -> data is the grid's placement.
@@ -168,6 +175,8 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   {
     return false;
   }
+  // Surfaces are lit on one side or two as the renderer lights surfaces (SurfaceShading.h).
+  in.Parameters.Surface.TwoSided = renderer->GetTwoSidedLighting() != 0;
   const avs::ScatteringParameters& rp = in.Parameters;
 
   // Lights in world space, at most 8.
@@ -262,31 +271,31 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
 void vtkAVSVolumeMapper::WarnAboutShading(vtkVolumeProperty* property)
 {
   // Phong shading (ShadeOn with the ambient, diffuse, specular coefficients and the specular
-  // power) has no meaning for these physically based mappers: EA and AO are never lit by the
-  // property's coefficients, ambient scattering is always lit by its scattering model.
+  // power): EA and AO are never lit by the property's coefficients; ambient scattering shades
+  // surfaces inside the medium with component 0's (SurfaceShading.h), and says so where another
+  // component's differ.
   std::string warning;
-  bool shade = false, phong = false;
+  bool shade = false, differs = false;
   for (int c = 0; c < VTK_MAX_VRCOMP; ++c)
   {
     shade = shade || property->GetShade(c);
-    phong = phong ||
-      (property->GetShade(c) &&
-        (property->GetAmbient(c) != 0.1 || property->GetDiffuse(c) != 0.7 ||
-          property->GetSpecular(c) != 0.2 || property->GetSpecularPower(c) != 10.0));
+    differs = differs ||
+      (c > 0 && c < this->Internal->Scene.Medium.NumberOfComponents() &&
+        (property->GetShade(c) != property->GetShade(0) ||
+          property->GetAmbient(c) != property->GetAmbient(0) ||
+          property->GetDiffuse(c) != property->GetDiffuse(0) ||
+          property->GetSpecular(c) != property->GetSpecular(0) ||
+          property->GetSpecularPower(c) != property->GetSpecularPower(0)));
   }
-  if (shade)
+  if (shade && this->GetEffect() != 2)
   {
-    if (this->GetEffect() != 2)
-    {
-      warning = "ShadeOn has no effect on " + std::string(this->GetClassName()) +
-        ": it does not shade (vtkAmbientScatteringVolumeMapper lights the volume by scattering)";
-    }
-    else if (phong)
-    {
-      warning = "the property's ambient, diffuse and specular coefficients and specular power are "
-                "not used: ambient scattering lights the volume through its scattering model "
-                "(Albedo, Anisotropy, the renderer's lights)";
-    }
+    warning = "ShadeOn has no effect on " + std::string(this->GetClassName()) +
+      ": it does not shade (vtkAmbientScatteringVolumeMapper shades surfaces inside the medium)";
+  }
+  else if (differs && this->GetEffect() == 2)
+  {
+    warning = "the shading flags and coefficients of components other than 0 are not used: "
+              "component 0's shade the surfaces of every component";
   }
   if (property->GetUseClippedVoxelIntensity())
   {

@@ -43,8 +43,10 @@
  * (slice for all three) is a vtkErrorMacro naming the mode, with nothing drawn.
  *
  * NaN voxels are empty space and infinities are clamped to the finite range, with one warning
- * that counts them. The property's shading flags (ShadeOn, ambient, diffuse, specular) have no
- * meaning for these physically based mappers: a warning says so where they would mislead.
+ * that counts them. The property's shading flags (ShadeOn, ambient, diffuse, specular) do not
+ * change the emission-absorption and ambient-occlusion pictures (a warning says so); ambient
+ * scattering shades surfaces inside the medium with them
+ * (vtkAmbientScatteringVolumeMapper::SetVolumetricScatteringBlending).
  *
  * Bad input — no or empty image, no such array, more than four components, three dependent
  * components, bad spacing, a volume too large for the GPU, more than 8 clipping planes or one

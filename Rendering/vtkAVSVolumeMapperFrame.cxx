@@ -5,6 +5,7 @@
 
 #include "vtkAVSVolumeMapperInternals.h"
 
+#include "Classifier.h"
 #include "DisplayTransform.h"
 #include "ImageSampleDistance.h"
 #include "vtkAVSRenderPasses.h"
@@ -128,6 +129,7 @@ void vtkAVSVolumeMapper::AssembleFrame(vtkRenderer* renderer,
   frame.WholeDimensions = in.Whole.Dimensions;
   frame.PieceOffset = in.PieceOffset;
   frame.Lights = in.WorldLights;
+  frame.ShadingInverseRange = avs::Classifier(in.Scene).ShadingInverseRange();
   frame.Jitter = this->UseJittering != 0;
   frame.Prop = volume;
   frame.Mapper = this;

@@ -65,6 +65,12 @@ void vtkAVSVolumeMapper::ResolveRefinement(vtkRenderer* renderer,
     warning = "PathTracedRefinement is not done for a piece of a distributed image (the paths "
               "would miss the other processes' pieces): the ambient-scattering picture is shown";
   }
+  else if (in.Parameters.Surface.Active())
+  {
+    warning = "PathTracedRefinement is not done with ShadeOn and a VolumetricScatteringBlending "
+              "below 2 (the GPU path tracer has no surfaces inside the medium): the "
+              "ambient-scattering picture is shown";
+  }
   else if (bricked)
   {
     warning = "PathTracedRefinement is not done for a volume split into bricks (see "

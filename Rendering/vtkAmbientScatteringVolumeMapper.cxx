@@ -37,6 +37,7 @@ void vtkAmbientScatteringVolumeMapper::FillParameters(avs::ScatteringParameters&
   p.DiffusionVolumeMaximumDimension = this->DiffusionVolumeMaximumDimension;
   p.Model = this->ScatteringModel == ExtendedModel ? avs::ScatteringModel::Extended
                                                    : avs::ScatteringModel::Paper;
+  p.Surface.Blending = this->VolumetricScatteringBlending;
 }
 
 const avs::ScatteringTable* vtkAmbientScatteringVolumeMapper::GetScatteringTable()
@@ -115,6 +116,7 @@ void vtkAmbientScatteringVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ScatteringModel: " << this->GetScatteringModelAsString() << "\n";
   os << indent << "DiffusionVolumeMaximumDimension: " << this->DiffusionVolumeMaximumDimension
      << "\n";
+  os << indent << "VolumetricScatteringBlending: " << this->VolumetricScatteringBlending << "\n";
   os << indent << "PathTracedRefinement: " << (this->PathTracedRefinement ? "On" : "Off") << "\n";
   os << indent << "MaximumSamplesPerPixel: " << this->MaximumSamplesPerPixel << "\n";
   os << indent << "ScatteringTableFileName: "

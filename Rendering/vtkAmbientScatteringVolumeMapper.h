@@ -142,6 +142,24 @@ public:
   }
   ///@}
 
+  ///@{
+  /**
+   * Surfaces inside the medium, vtkGPUVolumeRayCastMapper's setting with the same meaning
+   * (0-2, considered only with the property's ShadeOn; Documentation/VTKSettings.md says where
+   * ours differs). With ShadeOn a scattering event where the normalised gradient is strong
+   * reflects the light that reaches it like a surface: the property's ambient, diffuse and
+   * specular coefficients and specular power made an energy-conserving BRDF, the gradient its
+   * normal, lit by the same shadowed, scattered light as the medium (Rendering/Core/
+   * SurfaceShading.h defines every term). 0 (the default, as in VTK): the share of surface
+   * events grows with the gradient alone, VTK's shaded structure with this mapper's shadows and
+   * glow; towards 1 it needs opacity as well (VTK's blend by opacity and gradient); 2: pure
+   * volume scattering, the picture ShadeOff gives. ShadeOff gives the unshaded picture whatever
+   * this value.
+   */
+  vtkSetClampMacro(VolumetricScatteringBlending, float, 0.0f, 2.0f);
+  vtkGetMacro(VolumetricScatteringBlending, float);
+  ///@}
+
   /**
    * The default Exposure of this mapper; its ToneMapping defaults to ShoulderToneMapping and
    * AutoExposure to off (the display transform: vtkAVSVolumeMapper::SetExposure). Measured by the
@@ -225,6 +243,7 @@ protected:
   int DiffusionVolumeMaximumDimension = 64;
   char* ScatteringTableFileName = nullptr;
   int ScatteringModel = ExtendedModel;
+  float VolumetricScatteringBlending = 0.0f;
   vtkAmbientScatteringTable* Table;
 
 private:

@@ -305,6 +305,8 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
   parameters.OcclusionVolumeMaximumDimension = this->OcclusionVolumeMaximumDimension;
   parameters.Model = this->ScatteringModel == ExtendedModel ? avs::ScatteringModel::Extended
                                                             : avs::ScatteringModel::Paper;
+  parameters.Surface = vtkAVSPropertyTranslator::ToSurface(
+    this->VolumeProperty, this->VolumetricScatteringBlending, this->Renderer);
   const avs::ScatteringParameters resolved = parameters.Resolve(scene.Scalars.Geometry);
 
   const int w = std::max(1, this->ImageSize[0]);
@@ -460,6 +462,7 @@ void vtkVolumeReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
      << (this->ResolvedToneMapping == ShoulderToneMapping ? "Shoulder" : "Clamp") << "\n";
   os << indent << "Albedo: " << this->Albedo << "\n";
   os << indent << "Anisotropy: " << this->Anisotropy << "\n";
+  os << indent << "VolumetricScatteringBlending: " << this->VolumetricScatteringBlending << "\n";
   os << indent << "ScatteringModel: " << this->GetScatteringModelAsString() << "\n";
   os << indent << "AmbientRadius: " << this->AmbientRadius
      << (this->AmbientRadius > 0 ? "" : " (automatic)") << "\n";

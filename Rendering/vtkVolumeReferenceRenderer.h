@@ -239,6 +239,17 @@ public:
 
   ///@{
   /**
+   * Surfaces inside the medium (ambient scattering and the path tracer), as
+   * vtkAmbientScatteringVolumeMapper::SetVolumetricScatteringBlending: with the property's
+   * ShadeOn, 0 (the default) to 2 (pure volume scattering). The renderer's TwoSidedLighting
+   * says whether surfaces reflect on both sides (on without a renderer).
+   */
+  vtkSetClampMacro(VolumetricScatteringBlending, float, 0.0f, 2.0f);
+  vtkGetMacro(VolumetricScatteringBlending, float);
+  ///@}
+
+  ///@{
+  /**
    * Henyey–Greenstein anisotropy g in [-0.95, 0.95]. Default 0.
    */
   vtkSetClampMacro(Anisotropy, double, -0.95, 0.95);
@@ -423,6 +434,7 @@ protected:
   int ResolvedToneMapping = ClampToneMapping;
   double Albedo = 0.8;
   double Anisotropy = 0.0;
+  float VolumetricScatteringBlending = 0.0f;
   int ScatteringModel = ExtendedModel;
   double AmbientRadius = 0.0;
   double EmissionWeight = 0.0;

@@ -12,6 +12,7 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkEmissionAbsorptionVolumeMapper.h"
 #include "vtkFloatArray.h"
+#include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageAppend.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
@@ -197,8 +198,24 @@ double Sum(const std::vector<double>& values)
   return sum;
 }
 
-// EA, AO, the paper's ambient scattering, the extended model.
-constexpr int Models = 4;
+// `picture` scaled by the factor that minimises its RMSE against `reference` (VTK's shaded
+// mapper at its best exposure), clamped to [0, 1] as the pictures are.
+std::vector<double> AtBestExposure(std::vector<double> picture,
+  const std::vector<double>& reference)
+{
+  double pr = 0.0, pp = 0.0;
+  for (std::size_t i = 0; i < picture.size(); ++i)
+  {
+    pr += picture[i] * reference[i];
+    pp += picture[i] * picture[i];
+  }
+  const double scale = pp > 0.0 ? pr / pp : 1.0;
+  for (double& v : picture)
+  {
+    v = std::clamp(v * scale, 0.0, 1.0);
+  }
+  return picture;
+}
 
 AccuracyResult Measured(const std::string& scene,
   const std::string& model,
@@ -308,7 +325,11 @@ AccuracyScene SetUpAccuracyScene(const AccuracySettings& settings,
 {
   StudyScene scene = MakeScene(name, settings.Voxels, settings.CloudOpacity);
   AccuracyScene out;
-  out.Name = name;
+  out.Name = settings.Shade ? name + "_shaded" : name;
+  if (settings.Shade)
+  {
+    scene.Property->ShadeOn();
+  }
   out.Data = ToImageData(scene.Density);
   out.Property = scene.Property;
   out.Albedo = scene.Albedo;
@@ -331,6 +352,7 @@ AccuracyScene SetUpAccuracyScene(const AccuracySettings& settings,
   p.AmbientRadius = settings.AmbientRadius;
   p.Albedo = scene.Albedo;
   p.Anisotropy = scene.Anisotropy;
+  p.Surface = vtkAVSPropertyTranslator::ToSurface(scene.Property, settings.Blending, renderer);
   out.Parameters = p.Resolve(out.Core.Scalars.Geometry);
   out.Camera = vtkAVSSceneTranslator::ToCamera(renderer->GetActiveCamera());
   return out;
@@ -343,6 +365,7 @@ void ConfigureAccuracyMapper(vtkAmbientScatteringVolumeMapper* mapper,
   mapper->SetAmbientRadius(settings.AmbientRadius);
   mapper->SetAlbedo(scene.Albedo);
   mapper->SetAnisotropy(scene.Anisotropy);
+  mapper->SetVolumetricScatteringBlending(static_cast<float>(settings.Blending));
   mapper->UseJitteringOff();
   // The truth is linear: the lit mappers are measured on their radiance (exposure 1, no tone
   // curve), as EA and AO are.
@@ -479,9 +502,18 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
     ConfigureAccuracyMapper(asx, scene, settings);
     asx->SetScatteringModelToExtended();
 
-    // EA's colours scaled by k (clamped at 1 by the transfer function).
+    // EA's colours scaled by k (clamped at 1 by the transfer function). EA, AO and the unshaded
+    // extended model get the property with ShadeOff.
+    vtkNew<vtkVolumeProperty> unshaded;
+    unshaded->DeepCopy(scene.Property);
+    unshaded->ShadeOff();
+    vtkNew<vtkAmbientScatteringVolumeMapper> asxOff; // the extended model with ShadeOff
+    ConfigureAccuracyMapper(asxOff, scene, settings);
+    vtkNew<vtkGPUVolumeRayCastMapper> vtkShaded; // VTK's, ShadeOn, at its best exposure
+    vtkShaded->SetSampleDistance(0.5 * 2.0 / (settings.Voxels - 1));
+    vtkShaded->AutoAdjustSampleDistancesOff();
     vtkNew<vtkVolumeProperty> eaProperty;
-    eaProperty->DeepCopy(scene.Property);
+    eaProperty->DeepCopy(unshaded);
     vtkNew<vtkColorTransferFunction> scaled;
     scaled->DeepCopy(scene.Property->GetRGBTransferFunction(0));
     for (int i = 0; i < scaled->GetSize(); ++i)
@@ -495,22 +527,36 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
       scaled->SetNodeValue(i, node);
     }
     eaProperty->SetColor(scaled);
-    const std::string models[Models] = { "ea", "ao", "as", "asx" };
-    vtkAVSVolumeMapper* mappers[Models] = { ea, ao, as, asx };
-    std::vector<double> pictures[Models];
-    for (int m = 0; m < Models; ++m)
+    std::vector<std::string> models{ "ea", "ao", "as", "asx" };
+    std::vector<vtkAVSVolumeMapper*> mappers{ ea, ao, as, asx };
+    std::vector<vtkVolumeProperty*> properties{
+      eaProperty, unshaded, scene.Property, scene.Property
+    };
+    if (settings.Shade)
     {
-      mappers[m]->SetInputData(data);
-      mappers[m]->UseJitteringOff();
+      models.insert(models.end(), { "asx_off", "vtk" });
+      mappers.insert(mappers.end(), { asxOff, nullptr });
+      properties.insert(properties.end(), { unshaded, scene.Property });
+    }
+    const int count = static_cast<int>(models.size());
+    std::vector<std::vector<double>> pictures(models.size());
+    for (int m = 0; m < count; ++m)
+    {
+      vtkVolumeMapper* mapper = mappers[m] ? static_cast<vtkVolumeMapper*>(mappers[m])
+                                           : static_cast<vtkVolumeMapper*>(vtkShaded);
+      mapper->SetInputData(data);
+      if (mappers[m])
+      {
+        mappers[m]->UseJitteringOff();
+      }
       vtkNew<vtkVolume> volume;
-      volume->SetMapper(mappers[m]);
-      volume->SetProperty(
-        m == 0 ? static_cast<vtkVolumeProperty*>(eaProperty) : scene.Property.Get());
+      volume->SetMapper(mapper);
+      volume->SetProperty(properties[m]);
       renderer->AddVolume(volume);
       window->Render();
       pictures[m] = AccuracyGrab(window);
       renderer->RemoveVolume(volume);
-      if (mappers[m]->GetNumberOfRenderedFrames() != 1)
+      if (mappers[m] && mappers[m]->GetNumberOfRenderedFrames() != 1)
       {
         std::fprintf(stderr,
           "avs-accuracy: the %s mapper did not render %s\n",
@@ -518,11 +564,15 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
           name.c_str());
         return false;
       }
-      results.push_back(Measured(name, models[m], pictures[m], reference, noise));
+      if (!mappers[m])
+      {
+        pictures[m] = AtBestExposure(pictures[m], reference);
+      }
+      results.push_back(Measured(scene.Name, models[m], pictures[m], reference, noise));
     }
-    for (int m = 0; m < Models; ++m)
+    for (int m = 0; m < count; ++m)
     {
-      results[results.size() - Models + m].MeanRatio =
+      results[results.size() - count + m].MeanRatio =
         Sum(reference) > 0 ? Sum(pictures[m]) / Sum(reference) : 0.0;
     }
     if (settings.Verbose)
@@ -543,21 +593,21 @@ bool RunAccuracyStudy(const AccuracySettings& settings,
         k,
         noise,
         truthSum > 0 ? 100.0 * Sum(once) / truthSum : 0.0,
-        results[results.size() - 4].MeanRatio,
-        results[results.size() - 3].MeanRatio,
-        results[results.size() - 2].MeanRatio,
-        results[results.size() - 1].MeanRatio);
+        results[results.size() - count].MeanRatio,
+        results[results.size() - count + 1].MeanRatio,
+        results[results.size() - count + 2].MeanRatio,
+        results[results.size() - count + 3].MeanRatio);
     }
     if (!settings.OutputPicture.empty())
     {
       vtkNew<vtkImageAppend> row;
       row->SetAppendAxis(0);
       row->AddInputData(AccuracyPicture(reference, size));
-      for (int m = 0; m < Models; ++m)
+      for (int m = 0; m < count; ++m)
       {
         row->AddInputData(AccuracyPicture(pictures[m], size));
       }
-      for (int m = 0; m < Models; ++m)
+      for (int m = 0; m < count; ++m)
       {
         std::vector<double> diff(reference.size());
         for (std::size_t i = 0; i < diff.size(); ++i)

@@ -29,7 +29,10 @@ class vtkVolumeProperty;
 struct AccuracyResult
 {
   std::string Scene;
-  std::string Model; ///< "ea", "ao", "as" (the paper's model) or "asx" (the extended one)
+  /// "ea", "ao", "as" (the paper's model) or "asx" (the extended one); with Shade also
+  /// "asx_off" (the extended model with ShadeOff) and "vtk" (vtkGPUVolumeRayCastMapper with
+  /// ShadeOn at the exposure that minimises its RMSE).
+  std::string Model;
   double Rmse = 0.0;
   double RelativeL1 = 0.0;
   double TruthNoise = 0.0; ///< RMSE of the scene's truth itself (from two seeds)
@@ -52,6 +55,11 @@ struct AccuracySettings
   /// paths, cloud opacity and radius); empty: none.
   std::string TruthCache;
   std::string OutputPicture; ///< a PNG of truth | EA | AO | AS | 4x |errors|, one row per scene
+  /// Surfaces inside the medium: the property's ShadeOn (VTK's coefficients) with this
+  /// VolumetricScatteringBlending, in the truth (the path tracer's surface events) and in
+  /// ambient scattering; the scenes' names get "_shaded".
+  bool Shade = false;
+  double Blending = 0.0;
   bool Verbose = false;
 };
 

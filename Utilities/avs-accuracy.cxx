@@ -8,6 +8,7 @@
 // are made comparable.
 #include "AccuracyStudy.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -26,6 +27,7 @@ int main(int argc, char* argv[])
       std::printf(
         "Usage: avs-accuracy [--size N] [--voxels N] [--spp N] [--output FILE.png]\n"
         "                    [--scenes A,B,...] [--cloud-opacity X] [--ambient-radius R]\n"
+        "                    [--shade B]\n"
         "\n"
         "Renders four scenes (cloud_back, cloud_side, nebula_point, dense_medical) with the GPU\n"
         "EA, AO and ambient-scattering mappers and with the path tracer, and prints each\n"
@@ -38,6 +40,10 @@ int main(int argc, char* argv[])
         "                    OcclusionRadius (world units; the scenes span [-1, 1]^3; 0: their\n"
         "                    default, 1/64 of the diagonal)\n"
         "  --truth-cache     a folder that keeps the path tracer's pictures between runs\n"
+        "  --shade B         surfaces inside the medium: ShadeOn with "
+        "VolumetricScatteringBlending\n"
+        "                    B (0-2) in the truth and ambient scattering, and two more models:\n"
+        "                    asx_off (ShadeOff) and vtk (VTK's shaded mapper, best exposure)\n"
         "Defaults: --size 96 --voxels 64 --spp 512 --output accuracy.png --cloud-opacity 0.6\n"
         "--ambient-radius 0\n");
       return 0;
@@ -56,6 +62,11 @@ int main(int argc, char* argv[])
       settings.SamplesPerPixel = std::max(1, std::atoi(value.c_str()));
     else if (arg == "--output")
       settings.OutputPicture = value;
+    else if (arg == "--shade")
+    {
+      settings.Shade = true;
+      settings.Blending = std::clamp(std::atof(value.c_str()), 0.0, 2.0);
+    }
     else if (arg == "--scenes")
     {
       settings.Scenes.clear();

@@ -2,6 +2,7 @@
 
 #include "Extinction.h"
 #include "ReferenceRenderer.h"
+#include "SurfaceShading.h"
 
 #include <algorithm>
 #include <cmath>
@@ -84,6 +85,17 @@ Classifier::Classifier(const VolumeScene& scene)
   const Vec3& h = scene.Scalars.Geometry.Spacing;
   const double mean = (h.x + h.y + h.z) / 3.0;
   this->GradientScale = { 0.5 * mean / h.x, 0.5 * mean / h.y, 0.5 * mean / h.z };
+  this->ShadedComponent = std::min(ShadingComponent(this->Medium), this->Count - 1);
+  const TransferFunction& shaded = *this->Transfer[this->ShadedComponent];
+  const double range = shaded.Maximum - shaded.Minimum;
+  this->InverseRange = range > 0.0 && std::isfinite(range) ? 1.0 / range : 1.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    Vec3 e{ 0, 0, 0 };
+    e[k] = 1.0;
+    const Vec3 local = scene.Scalars.Geometry.WorldToLocalDirection(e);
+    this->ToIndex[k] = { local.x / h.x, local.y / h.y, local.z / h.z };
+  }
 }
 
 bool Classifier::Sample(const Vec3& index, double s[4], double& valid) const
@@ -152,6 +164,47 @@ std::array<double, 4> Classifier::GradientMagnitudes(const Vec3& index) const
     g = std::sqrt(g);
   }
   return squared;
+}
+
+Vec3 Classifier::ShadingGradient(const Vec3& index) const
+{
+  Vec3 g{ 0, 0, 0 };
+  const int c = this->ShadedComponent;
+  for (int a = 0; a < 3; ++a)
+  {
+    Vec3 e{ 0, 0, 0 };
+    e[a] = 1.0;
+    double plus[4], minus[4];
+    this->SampleClamped(index + e, plus);
+    this->SampleClamped(index - e, minus);
+    g[a] = 0.5 * (plus[c] - minus[c]) * this->InverseRange;
+  }
+  return g;
+}
+
+double Classifier::NormalisedGradient(const Vec3& g) const
+{
+  // GradientScale is mean / (2 spacing): the mean spacing times d s / d x_a is 2 g_a times it.
+  return 2.0 * Length(Mul(g, this->GradientScale));
+}
+
+SurfacePoint Classifier::SurfaceAt(const Vec3& index, double sigmaT, double blending) const
+{
+  SurfacePoint out;
+  if (!(sigmaT > 0.0))
+  {
+    return out;
+  }
+  const Vec3 g = this->ShadingGradient(index);
+  const Vec3 world{ Dot(this->ToIndex[0], g), Dot(this->ToIndex[1], g), Dot(this->ToIndex[2], g) };
+  const double length = Length(world);
+  if (length > 0.0)
+  {
+    const double alpha = 1.0 - std::exp(-sigmaT * this->UnitDistance[0]);
+    out.Probability = SurfaceProbability(this->NormalisedGradient(g), alpha, blending);
+    out.Normal = world * (-1.0 / length);
+  }
+  return out;
 }
 
 Classified Classifier::FromSamples(const Vec3& index, const double s[4], double valid) const

@@ -25,6 +25,14 @@ struct Classified
   Vec3 Color{ 0, 0, 0 };
 };
 
+/// A sample as a surface (SurfaceShading.h): the share of surface events P_s and the world
+/// normal -grad s / |grad s| (0 where the gradient vanishes, with P_s = 0).
+struct SurfacePoint
+{
+  double Probability = 0.0;
+  Vec3 Normal{ 0, 0, 0 };
+};
+
 class Classifier
 {
 public:
@@ -54,6 +62,19 @@ public:
   /// (Medium.h, MediumOptions::GradientOpacity); exposed for the tests.
   std::array<double, 4> GradientMagnitudes(const Vec3& index) const;
 
+  /// The shading component's gradient (ShadingComponent, SurfaceShading.h) at a continuous
+  /// index, in index units: (s(x + e_a) - s(x - e_a)) / 2 per axis, divided by the component's
+  /// range (its transfer function's).
+  Vec3 ShadingGradient(const Vec3& index) const;
+  /// gamma of SurfaceShading.h for a ShadingGradient: the mean spacing times |grad s| / range.
+  double NormalisedGradient(const Vec3& shadingGradient) const;
+  /// The sample at a continuous index with extinction `sigmaT` as a surface, for the blending
+  /// B (SurfaceShading.h): P_s from the normalised gradient and alpha = 1 - e^(-sigma_t u), the
+  /// normal in world space (the gradient taken there by the transpose of d index / d world).
+  SurfacePoint SurfaceAt(const Vec3& index, double sigmaT, double blending) const;
+  /// 1 / the shading component's range (what the GPU uploads).
+  double ShadingInverseRange() const { return this->InverseRange; }
+
 private:
   // The components at `index` (normalised by the validity) and the validity there; false when
   // the point is outside the box.
@@ -72,6 +93,9 @@ private:
   double Weight[4] = { 1, 1, 1, 1 };
   Vec3 GradientScale{ 0.5, 0.5, 0.5 }; // mean spacing / (2 spacing_a)
   bool AnyGradient = false;
+  int ShadedComponent = 0;
+  Vec3 ToIndex[3]; // rows of d index / d world
+  double InverseRange = 1.0;
 };
 
 /// Everything sigma_t depends on apart from the grids (opacity tables, ranges, unit distances,

@@ -35,6 +35,12 @@ double VolumeTracker::Extinction(const Vec3& world, Vec3* color) const
   return c.SigmaT;
 }
 
+SurfacePoint VolumeTracker::Surface(const Vec3& world, double sigmaT, double blending) const
+{
+  return this->Classify.SurfaceAt(
+    this->Scene.Scalars.Geometry.WorldToIndex(world), sigmaT, blending);
+}
+
 // Walks the majorant cells along the ray inside the volume box, sampling tentative collisions
 // with each cell's majorant. visit(t, sigma, majorant) returns false to stop.
 template<typename Visit>
@@ -195,13 +201,27 @@ Vec3 TracePath(const PathContext& c, Ray ray, Random& rng, PathTracerStatistics&
     }
     const Vec3 x = ray.Origin + ray.Direction * t;
     Vec3 color;
-    c.Tracker.Extinction(x, &color);
+    const double sigma = c.Tracker.Extinction(x, &color);
     // Emission: sigma_a L_e / sigma_t at a real collision.
     L = L + Mul(beta, color) * ((1.0 - c.P.Albedo) * c.P.EmissionWeight);
     const Vec3 albedo = color * c.P.Albedo; // chromatic single-scattering albedo
     if (albedo.x <= 0.0 && albedo.y <= 0.0 && albedo.z <= 0.0)
     {
       break;
+    }
+    // Surfaces inside the medium: a surface event with probability P_s.
+    const SurfaceShading& shading = c.P.Surface;
+    const Vec3 toViewer = -ray.Direction;
+    bool surface = false, facing = false;
+    Vec3 normal{ 0, 0, 0 };
+    if (shading.Active())
+    {
+      const SurfacePoint point = c.Tracker.Surface(x, sigma, shading.Blending);
+      if (point.Probability > 0.0 && rng.Uniform() < point.Probability)
+      {
+        surface = true;
+        facing = Facing(shading, point.Normal, toViewer, normal);
+      }
     }
     // Next-event estimation to every light, ratio-tracked transmittance.
     for (const Light& light : c.Scene.Lights)
@@ -218,15 +238,58 @@ Vec3 TracePath(const PathContext& c, Ray ray, Random& rng, PathTracerStatistics&
       if (T > 0.0)
       {
         const double phase = HenyeyGreenstein(Dot(propagation, -ray.Direction), c.P.Anisotropy);
-        L = L + Mul(Mul(beta, albedo), irradiance) * (phase * T);
+        if (!surface)
+        {
+          L = L + Mul(Mul(beta, albedo), irradiance) * (phase * T);
+        }
+        else
+        {
+          // k_a of a phase-function event plus the BRDF (0 where the surface does not face the
+          // camera).
+          const SurfaceReflectance r = Reflect(shading, normal, -propagation, toViewer);
+          const Vec3 reflected = albedo * (shading.Ambient * phase + r.Diffuse) +
+            Vec3{ r.Specular, r.Specular, r.Specular } * c.P.Albedo;
+          L = L + Mul(Mul(beta, reflected), irradiance) * T;
+        }
       }
     }
-    // Continue: incoming light sampled from the phase function around the outgoing direction.
-    beta = Mul(beta, albedo);
-    const PhaseSample s =
-      SampleHenyeyGreenstein(ray.Direction, c.P.Anisotropy, rng.Uniform(), rng.Uniform());
+    // Continue: incoming light sampled from the phase function around the outgoing direction,
+    // or at a surface event by the lobe chosen with the coefficients' weights.
     ray.Origin = x;
-    ray.Direction = Normalize(s.Direction);
+    const double u = surface ? rng.Uniform() : 0.0;
+    if (!surface || u < shading.Ambient)
+    {
+      // (at a surface event k_a, chosen with probability k_a)
+      beta = Mul(beta, albedo);
+      const PhaseSample s =
+        SampleHenyeyGreenstein(ray.Direction, c.P.Anisotropy, rng.Uniform(), rng.Uniform());
+      ray.Direction = Normalize(s.Direction);
+    }
+    else if (facing && u < shading.Ambient + shading.Diffuse)
+    {
+      // f cos / pdf = k_d c, chosen with probability k_d.
+      beta = Mul(beta, albedo);
+      ray.Direction = Normalize(SampleCosine(normal, rng.Uniform(), rng.Uniform()));
+    }
+    else if (facing && u < shading.Ambient + shading.Diffuse + shading.Specular)
+    {
+      // f cos / pdf = k_s (p + 2) / (p + 1) cos, chosen with probability k_s.
+      const Vec3 mirror = normal * (2.0 * Dot(normal, toViewer)) - toViewer;
+      const Vec3 d = Normalize(
+        SamplePhongLobe(Normalize(mirror), shading.SpecularPower, rng.Uniform(), rng.Uniform()));
+      const double cosine = Dot(normal, d);
+      if (!(cosine > 0.0))
+      {
+        break;
+      }
+      beta = beta *
+        (c.P.Albedo * (shading.SpecularPower + 2.0) / (shading.SpecularPower + 1.0) * cosine);
+      ray.Direction = d;
+    }
+    else
+    {
+      break; // absorbed
+    }
     if (bounce >= c.S.RouletteDepth)
     {
       const double q = std::min(1.0, std::max({ beta.x, beta.y, beta.z }));

@@ -3,8 +3,12 @@
 // majorant grid samples free flights, ratio tracking estimates the transmittance of next-event
 // estimation to every light (directional, point, spot), directions come from the
 // Henyey–Greenstein phase function, the albedo is chromatic (albedo times the colour), the medium
-// emits k_e (1 - albedo) sigma_t c, and Russian roulette ends paths. Deterministic for a seed
-// whatever the threads, progressive (one sample per pixel per pass), same camera as the mappers.
+// emits k_e (1 - albedo) sigma_t c, and Russian roulette ends paths. With surfaces inside the
+// medium (ShadeOn, SurfaceShading.h) a collision is a surface event with probability P_s:
+// next-event estimation through k_a c times the phase function plus the BRDF, and the path goes
+// on by the phase function (k_a), the diffuse lobe (k_d), the specular lobe (k_s) or ends.
+// Deterministic for a seed whatever the threads, progressive (one sample per pixel per pass), same
+// camera as the mappers.
 #ifndef avs_PathTracer_h
 #define avs_PathTracer_h
 
@@ -74,6 +78,8 @@ public:
     PathTracerStatistics& stats) const;
   /// sigma_t and colour at a world point (zero outside the volume).
   double Extinction(const Vec3& world, Vec3* color = nullptr) const;
+  /// The point with extinction `sigmaT` as a surface (SurfaceShading.h) for the blending.
+  SurfacePoint Surface(const Vec3& world, double sigmaT, double blending) const;
 
 private:
   template<typename Visit>

@@ -8,6 +8,7 @@
 #include "LightVolume.h"
 #include "Parallel.h"
 #include "PhaseFunction.h"
+#include "SurfaceShading.h"
 
 #include <algorithm>
 #include <atomic>
@@ -229,13 +230,25 @@ void CastRay(const VolumeScene& scene,
     const double at = pairs ? (s - (s & 1)) + 1.0 : s + 0.5;
     return o + d * (t0 + at * dt);
   };
+  // Surfaces inside the medium (SurfaceShading.h): a local point with extinction sigma as a
+  // surface (P_s, world normal).
+  const bool surfaces = mode == RenderMode::AmbientScattering && p.Surface.Active();
+  auto surfaceAt = [&](const Vec3& x, double sigma)
+  {
+    return surfaces ? classifier.SurfaceAt(InIndexUnits(x, spacing), sigma, p.Surface.Blending)
+                    : SurfacePoint();
+  };
+  // What a sample returns of the volumetric light (1 without surfaces).
+  auto volumetricShare = [&](const Vec3& x, double sigma)
+  { return surfaces ? VolumetricShare(surfaceAt(x, sigma).Probability, p.Surface.Ambient) : 1.0; };
   // Ambient in-scattering from the ball around the sample s (eqs. 8.8-8.9), per unit of the
   // transmittance and of the ray's length: its sigma_t and colour, the lights at lightPoint(s).
   auto inscattered = [&](int s)
   {
     double sigma;
     Vec3 color;
-    classify(o + d * (t0 + (s + 0.5) * dt), sigma, color);
+    const Vec3 xs = o + d * (t0 + (s + 0.5) * dt);
+    classify(xs, sigma, color);
     if (!(sigma > 0.0))
     {
       return Vec3{ 0, 0, 0 };
@@ -254,7 +267,37 @@ void CastRay(const VolumeScene& scene,
       inscatter = inscatter +
         light.FreeIrradiance(world) * (transmittance * v.Slice.InScatteringCos(cosTheta, tau));
     }
-    return Mul(color, inscatter) * sigma;
+    return Mul(color, inscatter) * (sigma * volumetricShare(xs, sigma));
+  };
+  // The light a surface sample at x (sigma_t, colour c) reflects per unit of T (1 - e^(-sigma
+  // dt)): albedo P_s sum_j E_j T_j e^(-l sigma~) (k_d c f_d + k_s f_s), each light's shadow
+  // the light volume's tube transmittance times the transmittance over l = min(r, 1 / sigma_t) / 2
+  // (half a mean free path) at the averaged extinction (SurfaceShading.h), all read at
+  // lightPoint(i) as the in-scattering reads them.
+  auto reflected = [&](int i, const Vec3& x, double sigma, const Vec3& c)
+  {
+    const SurfacePoint surface = surfaceAt(x, sigma);
+    Vec3 out{ 0, 0, 0 };
+    if (!(surface.Probability > 0.0))
+    {
+      return out;
+    }
+    const Vec3 xl = lightPoint(i);
+    const double ball =
+      std::exp(-0.5 * std::min(p.AmbientRadius, 1.0 / sigma) * SampleLocalClamped(v.Averaged, xl));
+    const Vec3 world = geometry.LocalToWorld(xl);
+    for (std::size_t j = 0; j < scene.Lights.size(); ++j)
+    {
+      const Light& light = scene.Lights[j];
+      const SurfaceReflectance r =
+        Reflect(p.Surface, surface.Normal, -light.PropagationDirection(world), -ray.Direction);
+      const double shadow = SampleLocalClamped(v.LightVolumes[j], xl) * ball;
+      out = out +
+        Mul(
+          light.FreeIrradiance(world), c * r.Diffuse + Vec3{ r.Specular, r.Specular, r.Specular }) *
+          shadow;
+    }
+    return out * (p.Albedo * surface.Probability);
   };
   Vec3 L{ 0, 0, 0 };
   if (mode == RenderMode::AmbientScattering)
@@ -341,7 +384,22 @@ void CastRay(const VolumeScene& scene,
         }
         phiBefore = phi;
         phiBeforeIndex = i;
-        L = L + Mul(c, scattered) * (T * (1.0 - extinction) * p.Albedo / (4.0 * Pi));
+        Vec3 field = c;
+        if (surfaces)
+        {
+          const SurfacePoint surface = surfaceAt(x, sigmaT);
+          Vec3 facing;
+          field = DiffuseFieldColor(surface.Probability,
+            p.Surface,
+            c,
+            Facing(p.Surface, surface.Normal, -ray.Direction, facing));
+        }
+        L = L + Mul(field, scattered) * (T * (1.0 - extinction) * p.Albedo / (4.0 * Pi));
+      }
+      // Surfaces: the direct light the sample reflects.
+      if (surfaces && sigmaT > 0.0)
+      {
+        L = L + reflected(i, x, sigmaT, c) * (T * (1.0 - extinction));
       }
       // Ambient in-scattering from the ball around x' (eqs. 8.8-8.9), weighted by the
       // transmittance r before x'. x' is a sample, lag + 1 steps on, and the transmittance r

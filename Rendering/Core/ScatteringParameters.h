@@ -6,6 +6,7 @@
 
 #include "DisplayTransform.h"
 #include "Grid.h"
+#include "SurfaceShading.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,6 +38,10 @@ struct ScatteringParameters
   /// >= 0: multiplies every light's irradiance (VTK light units, E = 4 pi I c LightScale); applied
   /// where the VTK lights are translated (vtkAVSSceneTranslator::ToLights).
   double LightScale = 1.0;
+
+  /// Surfaces inside the medium (SurfaceShading.h): ShadeOn, the Phong coefficients and the
+  /// blending; ambient scattering only.
+  SurfaceShading Surface;
 
   // The extended model (DiffuseFluence.h).
   ScatteringModel Model = ScatteringModel::Extended;
@@ -122,6 +127,7 @@ struct ScatteringParameters
     p.DiffusionVolumeMaximumDimension = std::max(2, p.DiffusionVolumeMaximumDimension);
     p.DiffusionIterations = std::clamp(p.DiffusionIterations, 0, 4096);
     p.DiffusionCoarseIterations = std::clamp(p.DiffusionCoarseIterations, 0, 4096);
+    p.Surface = p.Surface.Resolved();
     p.Display.Exposure =
       std::isfinite(p.Display.Exposure) ? std::max(0.0, p.Display.Exposure) : 1.0;
     return p;

@@ -96,6 +96,32 @@ void vtkAVSFrameUniforms::SetParameters(vtkShaderProgram* program,
   else if (frame.Mode == avs::RenderMode::AmbientScattering)
   {
     program->SetUniformf("u_ambientRadius", static_cast<float>(p.AmbientRadius));
+    if (p.Surface.Active())
+    {
+      // Surfaces inside the medium (avs_surface.glsl).
+      const avs::SurfaceShading& s = p.Surface;
+      program->SetUniformf("u_surfaceBlending", static_cast<float>(s.Blending));
+      const float coefficients[4] = { static_cast<float>(s.Ambient),
+        static_cast<float>(s.Diffuse),
+        static_cast<float>(s.Specular),
+        static_cast<float>(s.SpecularPower) };
+      program->SetUniform4f("u_surfaceCoefficients", coefficients);
+      program->SetUniformi("u_surfaceTwoSided", s.TwoSided ? 1 : 0);
+      program->SetUniformf("u_surfaceInverseRange", static_cast<float>(frame.ShadingInverseRange));
+      program->SetUniformf(
+        "u_surfaceInverseReference", static_cast<float>(1.0 / avs::SurfaceGradientReference));
+      // The transpose of d index / d world, column-major: the world -> index matrix's upper
+      // 3 x 3 in VTK's row-major order.
+      float toWorld[9];
+      for (int r = 0; r < 3; ++r)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          toWorld[3 * r + c] = static_cast<float>(frame.WorldToIndex->GetElement(r, c));
+        }
+      }
+      program->SetUniformMatrix3x3("u_gradientToWorld", toWorld);
+    }
   }
 }
 

@@ -183,6 +183,9 @@ public:
     std::array<int, 3> PieceOffset{ 0, 0, 0 };
     std::array<int, 3> OcclusionDimensions{ 1, 1, 1 };
     std::vector<avs::Light> Lights; ///< world space
+    /// Surfaces inside the medium (Parameters.Surface active): 1 / the range of the component
+    /// whose gradient is the normal (avs::Classifier::ShadingInverseRange).
+    double ShadingInverseRange = 1.0;
     bool Jitter = true;
     /// The volume and its mapper, for the render passes attached to the volume (SSAO's draw
     /// buffers); with PeelingFront the volume goes into vtkDualDepthPeelingPass's front target

@@ -121,6 +121,14 @@ std::string vtkAVSShaderAssembly::RayCastDefines(avs::RenderMode mode,
   {
     defines += "#define AVS_LIGHTS_PER_PAIR\n";
   }
+  // Surfaces inside the medium (avs_surface.glsl): the normal is the gradient of the component
+  // that gives the opacity (avs::ShadingComponent).
+  if (p.Surface.Active())
+  {
+    const int component = layout.Mode == 1 ? 1 : (layout.Mode == 2 ? 3 : 0);
+    defines +=
+      "#define AVS_SURFACE\n#define AVS_SURFACE_COMPONENT " + std::to_string(component) + "\n";
+  }
   // Directional lights read A from a per-ray column of the table (see avs_as_effect.glsl) when
   // the table's tau axis is short enough to keep one column per light.
   if (positional != (1 << n) - 1 && tauNodes >= 2 && tauNodes <= vtkAVSRayCaster::MaximumTauNodes)
@@ -147,6 +155,7 @@ std::string vtkAVSShaderAssembly::RayCastFragmentShader(avs::RenderMode mode,
   Replace(fs, "//AVS::Display::Dec", avs_display);
   Replace(fs, "//AVS::Clip::Dec", avs_clip);
   Replace(fs, "//AVS::Effect::Dec", dec);
+  Replace(fs, "//AVS::Surface::Dec", avs_surface);
   Replace(fs, "//AVS::Skip::Dec", avs_skip);
   Replace(fs, "//AVS::Effect::Init", init);
   Replace(fs, "//AVS::Effect::Pair", pair);

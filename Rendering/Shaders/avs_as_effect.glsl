@@ -161,6 +161,9 @@ float Tube(int j, vec4 tubes0, vec4 tubes1)
   return j < 4 ? tubes0[clamp(j, 0, 3)] : tubes1[clamp(j - 4, 0, 3)];
 }
 
+// Surfaces inside the medium (avs_surface.glsl, with AVS_SURFACE).
+//AVS::Surface::Dec
+
 // E_j(x') A(theta_j; tau) of light j (a constant) at x'; `tube` is the light volume there (the
 // tube transmittance where the light enters the ball around x', Core/LightVolume.h), v the
 // table coordinate of tau.
@@ -206,6 +209,11 @@ vec3 LightSum(vec3 index, vec3 world, vec3 direction)
   float averaged = AVS_AVERAGED_SLOT < 4 ? tubes0[AVS_AVERAGED_SLOT & 3] : tubes1[AVS_AVERAGED_SLOT & 3];
 #else
   float averaged = textureLod(u_averagedExtinction, lc, 0.0).r;
+#endif
+#ifdef AVS_SURFACE
+  g_surfaceTubes0 = tubes0;
+  g_surfaceTubes1 = tubes1;
+  g_surfaceAveraged = averaged;
 #endif
   float v = TableTauCoordinate(u_ambientRadius * averaged);
   vec3 inscatter = vec3(0.0);
@@ -380,7 +388,23 @@ void EffectLeap(int from, int to)
 #else
       vec3 phi = ScatteredFluence(diffuse.rgb, diffuse.a, i, dt);
 #endif
+#ifdef AVS_SURFACE
+      // Surfaces reflect the diffuse field too (avs_surface.glsl).
+      SurfaceAt(coordinate, here.a);
+      L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * DiffuseFieldColor(here.rgb) * phi;
+#else
       L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * here.rgb * phi;
+#endif
+    }
+#endif
+#if defined(AVS_SURFACE) && defined(AVS_LOOKAHEAD_EXPLICIT)
+    // Surfaces: the direct light the sample reflects, its lights read at its light point.
+    if (here.a > 0.0 && T >= u_termination)
+    {
+      float ts = LightT(i);
+      SurfaceAt(coordinate, here.a);
+      LightSum(io + ts * id, origin + ts * direction, direction); // (for its light values)
+      L += T * (1.0 - extinction) * SurfaceReflected(origin + ts * direction, direction, here.rgb, here.a);
     }
 #endif
 #ifdef AVS_EMISSION
@@ -399,6 +423,11 @@ void EffectLeap(int from, int to)
     if (here.a > 0.0 && older >= u_termination)
     {
       float lagged = mix(newer, older, g_lagFraction);
+#ifdef AVS_SURFACE
+      // Surfaces: the share of the volumetric light the sample returns.
+      SurfaceAt(coordinate, here.a);
+      lagged *= VolumetricShare();
+#endif
 #ifdef AVS_SAMPLE_PAIRS
       L += lagged * dt * here.a * here.rgb * g_pairLight;
 #else
@@ -415,7 +444,22 @@ void EffectLeap(int from, int to)
 #else
         vec3 scattered = ScatteredFluence(g_phi, g_averaged, i, dt);
 #endif
+#ifdef AVS_SURFACE
+        // Surfaces reflect the diffuse field too (avs_surface.glsl).
+        L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * DiffuseFieldColor(here.rgb) *
+          scattered;
+#else
         L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * here.rgb * scattered;
+#endif
+      }
+#endif
+#ifdef AVS_SURFACE
+      // Surfaces: the direct light the sample reflects, with the light values its in-scattering
+      // (or its pair's) read.
+      if (T >= u_termination)
+      {
+        L += T * (1.0 - extinction) *
+          SurfaceReflected(origin + LightT(i) * direction, direction, here.rgb, here.a);
       }
 #endif
     }
@@ -434,7 +478,12 @@ void EffectLeap(int from, int to)
         AVS_CROP(s1, first);
         if (s1.a > 0.0)
         {
+#ifdef AVS_SURFACE
+          SurfaceAt(firstCoordinate, s1.a);
+          L += dt * VolumetricShare() * InScattered(s1, LightT(j));
+#else
           L += dt * InScattered(s1, LightT(j));
+#endif
         }
       }
     }
@@ -450,6 +499,10 @@ void EffectLeap(int from, int to)
       AVS_CROP(s2, ahead);
       if (s2.a > 0.0)
       {
+#ifdef AVS_SURFACE
+        SurfaceAt(aheadCoordinate, s2.a);
+        lagged *= VolumetricShare();
+#endif
         L += lagged * dt * InScattered(s2, LightT(i + g_lag + 1));
       }
     }

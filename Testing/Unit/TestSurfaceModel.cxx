@@ -1,0 +1,166 @@
+// Surfaces inside the medium (SurfaceShading.h): the share of surface events, the BRDF's energy,
+// the sides, the path tracer's lobes, and the classifier's normal on structured fields.
+#include "Classifier.h"
+#include "ReferenceRenderer.h"
+#include "SurfaceShading.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace avs;
+
+namespace
+{
+// Integral over the hemisphere about +z of Reflect's f cos for light from every direction: the
+// directional albedo seen from `toViewer`, by the midpoint rule in (cos theta, phi).
+SurfaceReflectance Albedo(const SurfaceShading& s, const Vec3& toViewer, int n = 400)
+{
+  SurfaceReflectance sum;
+  const Vec3 normal{ 0, 0, 1 };
+  for (int i = 0; i < n; ++i)
+  {
+    const double mu = (i + 0.5) / n;
+    for (int j = 0; j < 2 * n; ++j)
+    {
+      const Vec3 l = SphericalDirection(normal, mu, Pi * (j + 0.5) / n);
+      const SurfaceReflectance r = Reflect(s, normal, l, toViewer);
+      sum.Diffuse += r.Diffuse;
+      sum.Specular += r.Specular;
+    }
+  }
+  const double weight = 2.0 * Pi / (2.0 * n * n); // d(mu) d(phi)
+  sum.Diffuse *= weight;
+  sum.Specular *= weight;
+  return sum;
+}
+} // namespace
+
+TEST(SurfaceShading, ProbabilityFollowsVTKsBlending)
+{
+  for (double alpha : { 0.0, 0.3, 1.0 })
+  {
+    // No gradient, no surface; blending 2: no surface; blending 0: the gradient alone.
+    EXPECT_EQ(SurfaceProbability(0.0, alpha, 0.0), 0.0);
+    EXPECT_EQ(SurfaceProbability(0.5, alpha, 2.0), 0.0);
+    EXPECT_NEAR(
+      SurfaceProbability(SurfaceGradientReference, alpha, 0.0), 1.0 - std::exp(-1.0), 1e-12);
+    for (double b = 0.0; b <= 2.0; b += 0.25)
+    {
+      // Never more surface events than at blending 0 (VTK's weight B exp(-B g alpha) is not
+      // monotonic in B below 1), more as the gradient grows.
+      const double p = SurfaceProbability(0.1, alpha, b);
+      EXPECT_LE(p, SurfaceProbability(0.1, alpha, 0.0) + 1e-12) << "b " << b;
+      EXPECT_GE(SurfaceProbability(0.2, alpha, b), p - 1e-12);
+      EXPECT_GE(p, 0.0);
+      EXPECT_LE(p, 1.0);
+    }
+  }
+  // Between 0 and 2, opacity makes a surface (VTK's weight exp(-B g alpha)).
+  EXPECT_GT(SurfaceProbability(0.1, 0.9, 1.0), SurfaceProbability(0.1, 0.1, 1.0));
+}
+
+TEST(SurfaceShading, CoefficientsConserveEnergy)
+{
+  SurfaceShading s;
+  s.Ambient = 0.5;
+  s.Diffuse = 1.0;
+  s.Specular = 0.5;
+  s.SpecularPower = 1000.0;
+  const SurfaceShading r = s.Resolved();
+  EXPECT_NEAR(r.Ambient + r.Diffuse + r.Specular, 1.0, 1e-12);
+  EXPECT_NEAR(r.Diffuse / r.Ambient, 2.0, 1e-12);
+  EXPECT_EQ(r.SpecularPower, 128.0);
+  SurfaceShading vtk; // VTK's defaults sum to 1 and stay
+  EXPECT_EQ(vtk.Resolved().Diffuse, 0.7);
+}
+
+TEST(SurfaceShading, TheBRDFReflectsAtMostWhatArrives)
+{
+  SurfaceShading s;
+  s.Diffuse = 0.6;
+  s.Specular = 0.4;
+  s.Ambient = 0.0;
+  for (double p : { 1.0, 10.0, 60.0 })
+  {
+    s.SpecularPower = p;
+    for (double viewerCos : { 1.0, 0.7, 0.2 })
+    {
+      const Vec3 v = SphericalDirection({ 0, 0, 1 }, viewerCos, 0.3);
+      const SurfaceReflectance a = Albedo(s, v);
+      EXPECT_NEAR(a.Diffuse, s.Diffuse, 2e-3) << "Lambert reflects k_d";
+      EXPECT_LE(a.Specular, s.Specular * 1.01) << "power " << p << " viewer " << viewerCos;
+      EXPECT_GT(a.Specular, 0.0);
+    }
+  }
+}
+
+TEST(SurfaceShading, SidesAndNormal)
+{
+  SurfaceShading s;
+  const Vec3 n{ 0, 0, 1 };
+  const Vec3 front{ 0, 0.6, 0.8 }, behind{ 0, 0.6, -0.8 };
+  Vec3 facing;
+  // Two-sided: lit and seen from behind, it reflects as from the front.
+  EXPECT_TRUE(Facing(s, n, behind, facing));
+  EXPECT_EQ(facing.z, -1.0);
+  EXPECT_NEAR(Reflect(s, n, behind, behind).Diffuse, Reflect(s, n, front, front).Diffuse, 1e-12);
+  // Lit from the other side than the viewer's: dark.
+  EXPECT_EQ(Reflect(s, n, behind, front).Diffuse, 0.0);
+  // One-sided: seen from behind, nothing.
+  s.TwoSided = false;
+  EXPECT_FALSE(Facing(s, n, behind, facing));
+  EXPECT_EQ(Reflect(s, n, behind, behind).Diffuse, 0.0);
+  EXPECT_GT(Reflect(s, n, front, front).Diffuse, 0.0);
+  // The specular peak is in the mirror direction.
+  const Vec3 mirror{ 0, -0.6, 0.8 };
+  EXPECT_GT(Reflect(s, n, front, mirror).Specular, Reflect(s, n, front, front).Specular);
+}
+
+TEST(SurfaceShading, LobeSamplersHaveTheirMeanCosines)
+{
+  const Vec3 axis = Normalize(Vec3{ 0.3, -0.5, 0.8 });
+  const int n = 200000;
+  double cosine = 0.0, lobe = 0.0;
+  const double power = 12.0;
+  for (int i = 0; i < n; ++i)
+  {
+    // A stratified grid of (u1, u2).
+    const double u1 = (i % 400 + 0.5) / 400.0, u2 = (i / 400 + 0.5) / (n / 400.0);
+    cosine += Dot(SampleCosine(axis, u1, u2), axis);
+    lobe += Dot(SamplePhongLobe(axis, power, u1, u2), axis);
+  }
+  EXPECT_NEAR(cosine / n, 2.0 / 3.0, 1e-3);                   // E[cos] for pdf cos / pi
+  EXPECT_NEAR(lobe / n, (power + 1.0) / (power + 2.0), 1e-3); // for pdf ~ cos^p
+}
+
+TEST(SurfaceShading, ClassifierNormalPointsDownTheGradient)
+{
+  // s = 100 x over a lattice of spacing (0.5, 1, 2), range 0..1000 (the transfer function's):
+  // the normal is -x, gamma = mean spacing * |grad s| / range.
+  VolumeScene scene;
+  GridGeometry g;
+  g.Dimensions = { 21, 5, 5 };
+  g.Spacing = { 0.5, 1.0, 2.0 };
+  scene.Scalars = Grid(g);
+  for (int k = 0; k < 5; ++k)
+    for (int j = 0; j < 5; ++j)
+      for (int i = 0; i < 21; ++i)
+      {
+        scene.Scalars.At(i, j, k) = static_cast<float>(100.0 * 0.5 * i);
+      }
+  scene.Transfer.Minimum = 0.0;
+  scene.Transfer.Maximum = 1000.0;
+  scene.Transfer.Opacity = { 0.5f, 0.5f };
+  scene.Transfer.Color = { { 1, 1, 1 }, { 1, 1, 1 } };
+  const Classifier classifier(scene);
+  const Vec3 gradient = classifier.ShadingGradient({ 10, 2, 2 });
+  EXPECT_NEAR(gradient.x, 0.05, 1e-6); // (s(11) - s(9)) / 2 / range, per index step
+  EXPECT_NEAR(gradient.y, 0.0, 1e-9);
+  const double mean = (0.5 + 1.0 + 2.0) / 3.0;
+  EXPECT_NEAR(classifier.NormalisedGradient(gradient), mean * 100.0 / 1000.0, 1e-6);
+  const SurfacePoint p = classifier.SurfaceAt({ 10, 2, 2 }, 1.0, 0.0);
+  EXPECT_NEAR(p.Normal.x, -1.0, 1e-9);
+  EXPECT_NEAR(p.Probability, 1.0 - std::exp(-mean * 0.1 / SurfaceGradientReference), 1e-6);
+  EXPECT_EQ(classifier.SurfaceAt({ 10, 2, 2 }, 0.0, 0.0).Probability, 0.0); // no material
+}
