@@ -65,12 +65,6 @@ void vtkAVSVolumeMapper::ResolveRefinement(vtkRenderer* renderer,
     warning = "PathTracedRefinement is not done for a piece of a distributed image (the paths "
               "would miss the other processes' pieces): the ambient-scattering picture is shown";
   }
-  else if (in.Parameters.Surface.Active())
-  {
-    warning = "PathTracedRefinement is not done with ShadeOn and a VolumetricScatteringBlending "
-              "below 2 (the GPU path tracer has no surfaces inside the medium): the "
-              "ambient-scattering picture is shown";
-  }
   else if (bricked)
   {
     warning = "PathTracedRefinement is not done for a volume split into bricks (see "
@@ -108,6 +102,16 @@ void vtkAVSVolumeMapper::ResolveRefinement(vtkRenderer* renderer,
       static_cast<double>(p.LightVolumeMaximumDimension),
       static_cast<double>(p.DiffusionVolumeMaximumDimension),
       static_cast<double>(this->UseJittering) });
+  // Surfaces inside the medium: what the ray caster and the path tracer shade with.
+  const avs::SurfaceShading& s = p.Surface;
+  key.insert(key.end(),
+    { static_cast<double>(s.Active()),
+      s.Blending,
+      s.Ambient,
+      s.Diffuse,
+      s.Specular,
+      s.SpecularPower,
+      static_cast<double>(s.TwoSided) });
   // The viewport, the volume's placement, the camera and the lights.
   int width = 0, height = 0, x = 0, y = 0;
   renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);

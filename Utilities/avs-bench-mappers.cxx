@@ -37,7 +37,10 @@
 // ambient-scattering models alone (as4 and asx4: frames, rebuilds and their ratios).
 // --no-skipping turns our mappers' empty-space skipping off (what it buys: a run with it
 // against one without). --time-series plays the volume as a simulation of --steps steps instead
-// (BenchTimeSeries.h).
+// (BenchTimeSeries.h). --shade measures what surfaces inside the medium cost: the extended
+// model's frame with ShadeOn (VolumetricScatteringBlending 0) against the unshaded one (ShadeOn
+// with blending 2 builds the unshaded program, ShadeOff's bit for bit), with one light and with
+// four, in alternation (shade_over_unshaded, shade4_over_unshaded4), and stops.
 #include "BenchInteraction.h"
 #include "BenchScene.h"
 #include "BenchTimeSeries.h"
@@ -77,7 +80,7 @@ int main(int argc, char* argv[])
 {
   int voxels = 256, size = 512, frames = 10, lightGrid = 0, steps = 20;
   bool skipEmptySpace = true, timeSeries = false, interactionOnly = false, clipping = false,
-       clipNothing = false, modelsOnly = false, framesOnly = false;
+       clipNothing = false, modelsOnly = false, framesOnly = false, shadeOnly = false;
   std::string writeScene, embryo;
   for (int i = 1; i < argc; ++i)
   {
@@ -89,7 +92,7 @@ int main(int argc, char* argv[])
         "[--interaction-only | --scattering-models-only] [--frames-only] "
         "[--clipping | --clipping-nothing] "
         "[--write-scene FILE.vti] [--embryo FILE.slc] [--no-skipping] "
-        "[--time-series [--steps N]]\n\n"
+        "[--time-series [--steps N]] [--shade]\n\n"
         "Median frame times of VTK's vtkGPUVolumeRayCastMapper and of the module's "
         "mappers on the built-in nebula\n(N^3 voxels, default 256), N x N pixels "
         "(default 512), over N frames (default 10), and their ratios;\nthen interactive "
@@ -100,6 +103,8 @@ int main(int argc, char* argv[])
         "--scattering-models-only measures ambient scattering with 4 lights in the paper's "
         "and the extended model alone.\n"
         "--frames-only: the frames and their ratios alone (no rebuilds, no interaction).\n"
+        "--shade: the extended model's frame with ShadeOn (surfaces inside the medium) "
+        "against ShadeOff's, one light and four, and stop.\n"
         "--clipping: three clipping planes and cropping (fence) on every mapper;\n"
         "--clipping-nothing: planes outside the volume, every cropping region kept.\n"
         "--write-scene FILE.vti: write the nebula (for ParaView's peer, "
@@ -134,6 +139,11 @@ int main(int argc, char* argv[])
     if (arg == "--no-skipping")
     {
       skipEmptySpace = false;
+      continue;
+    }
+    if (arg == "--shade")
+    {
+      shadeOnly = true;
       continue;
     }
     if (arg == "--frames-only")
@@ -337,6 +347,35 @@ int main(int argc, char* argv[])
     }
     std::printf("# clipping: three planes and cropping (%s) on every mapper\n",
       clipNothing ? "outside the volume, every region kept" : "fence");
+  }
+
+  if (shadeOnly)
+  {
+    // Surfaces inside the medium: as1 and as4 become the extended model with ShadeOn at the
+    // default blending, asx1 and asx4 the unshaded program (blending 2).
+    b.Property->ShadeOn();
+    for (vtkAmbientScatteringVolumeMapper* m : { as1.Get(), as4.Get() })
+    {
+      m->SetScatteringModelToExtended();
+      m->SetVolumetricScatteringBlending(0.0f);
+    }
+    asx1->SetVolumetricScatteringBlending(2.0f);
+    asx4->SetVolumetricScatteringBlending(2.0f);
+    b.SetLights(1);
+    const std::vector<Bench::Timing> shadeOne = b.MeasureEach({ asx1, as1 });
+    b.SetLights(4);
+    const std::vector<Bench::Timing> shadeFour = b.MeasureEach({ asx4, as4 });
+    std::printf("bench %s %.4f s\n", name("frame_asx1_unshaded").c_str(), shadeOne[0].Median);
+    std::printf("bench %s %.4f s\n", name("frame_asx1_shaded").c_str(), shadeOne[1].Median);
+    std::printf("bench %s %.4f s\n", name("frame_asx4_unshaded").c_str(), shadeFour[0].Median);
+    std::printf("bench %s %.4f s\n", name("frame_asx4_shaded").c_str(), shadeFour[1].Median);
+    std::printf("ratio %s %.3f\n",
+      name("shade_over_unshaded").c_str(),
+      Bench::RatioOf(shadeOne[0], shadeOne[1]));
+    std::printf("ratio %s %.3f\n",
+      name("shade4_over_unshaded4").c_str(),
+      Bench::RatioOf(shadeFour[0], shadeFour[1]));
+    return 0;
   }
 
   // The frames: with one light VTK's EA, ours, AO and ambient scattering in alternation, then

@@ -6,7 +6,10 @@ compares the picture with the one the VTK-side mapper renders of the same scene,
 process, with ParaView's VTK: a plain vtkRenderer and vtkVolume whose mapper is a new instance of
 the class the representation renders with (the plugin's vtkAmbientScatteringVolumeMapper). Then
 checks that Albedo, ScatteringAnisotropy (the panel's "Anisotropy"), LightingModel, a moved
-light and ParaView's light kit change the picture, and that undoing them gives it back.
+light and ParaView's light kit change the picture, and that undoing them gives it back; and that
+ParaView's Shade, Specular and Volumetric Scattering Blending drive the surfaces inside the medium
+(Shade changes the picture, so does Specular with it, and a blending of 2 gives the unshaded
+picture back).
 
 usage: pvbatch --force-offscreen-rendering TestPVAmbientScattering.py PLUGIN OUTPUT_DIR
 """
@@ -242,6 +245,25 @@ def main(plugin, out):
     display.AutoExposure = 0
     changes("pv_anisotropy", setter("ScatteringAnisotropy", 0.8),
             setter("ScatteringAnisotropy", 0.0), "Anisotropy 0 -> 0.8")
+    # Surfaces inside the medium: ParaView's own shading properties.
+    changes("pv_shade", setter("Shade", 1), setter("Shade", 0), "Shade 0 -> 1")
+    display.Shade = 1
+    shaded = render("pv_shaded")
+    display.Specular = 0.6
+    specular = render("pv_shaded_specular")
+    display.Specular = 0.0
+    checks.check(t.psnr(shaded, specular) < 45.0,
+                 "with Shade, Specular 0 -> 0.6 changes the picture (%.1f dB)"
+                 % t.psnr(shaded, specular))
+    display.VolumetricScatteringBlending = 2.0
+    pure = render("pv_shaded_blending2")
+    checks.check(mapper is not None and "VolumetricScatteringBlending: 2" in str(mapper),
+                 "VolumetricScatteringBlending reaches the mapper")
+    checks.check(t.psnr(base, pure) >= 50.0,
+                 "with Shade, VolumetricScatteringBlending 2 gives the unshaded picture (%.1f dB)"
+                 % t.psnr(base, pure))
+    display.VolumetricScatteringBlending = 0.0
+    display.Shade = 0
     ea = changes("pv_emission_absorption", setter("LightingModel", "Emission-Absorption"),
                  setter("LightingModel", "Ambient Scattering"),
                  "LightingModel -> Emission-Absorption")

@@ -230,17 +230,19 @@ void CastRay(const VolumeScene& scene,
     const double at = pairs ? (s - (s & 1)) + 1.0 : s + 0.5;
     return o + d * (t0 + at * dt);
   };
-  // Surfaces inside the medium (SurfaceShading.h): a local point with extinction sigma as a
-  // surface (P_s, world normal).
+  // Surfaces inside the medium (SurfaceShading.h): sample s with extinction sigma as a surface
+  // (P_s, world normal), the gradient read at its light point, where its lights are (with
+  // pairs, once for both samples of a pair, as on the GPU).
   const bool surfaces = mode == RenderMode::AmbientScattering && p.Surface.Active();
-  auto surfaceAt = [&](const Vec3& x, double sigma)
+  auto surfaceAt = [&](int s, double sigma)
   {
-    return surfaces ? classifier.SurfaceAt(InIndexUnits(x, spacing), sigma, p.Surface.Blending)
-                    : SurfacePoint();
+    return surfaces
+      ? classifier.SurfaceAt(InIndexUnits(lightPoint(s), spacing), sigma, p.Surface.Blending)
+      : SurfacePoint();
   };
   // What a sample returns of the volumetric light (1 without surfaces).
-  auto volumetricShare = [&](const Vec3& x, double sigma)
-  { return surfaces ? VolumetricShare(surfaceAt(x, sigma).Probability, p.Surface.Ambient) : 1.0; };
+  auto volumetricShare = [&](int s, double sigma)
+  { return surfaces ? VolumetricShare(surfaceAt(s, sigma).Probability, p.Surface.Ambient) : 1.0; };
   // Ambient in-scattering from the ball around the sample s (eqs. 8.8-8.9), per unit of the
   // transmittance and of the ray's length: its sigma_t and colour, the lights at lightPoint(s).
   auto inscattered = [&](int s)
@@ -267,16 +269,16 @@ void CastRay(const VolumeScene& scene,
       inscatter = inscatter +
         light.FreeIrradiance(world) * (transmittance * v.Slice.InScatteringCos(cosTheta, tau));
     }
-    return Mul(color, inscatter) * (sigma * volumetricShare(xs, sigma));
+    return Mul(color, inscatter) * (sigma * volumetricShare(s, sigma));
   };
   // The light a surface sample at x (sigma_t, colour c) reflects per unit of T (1 - e^(-sigma
   // dt)): albedo P_s sum_j E_j T_j e^(-l sigma~) (k_d c f_d + k_s f_s), each light's shadow
   // the light volume's tube transmittance times the transmittance over l = min(r, 1 / sigma_t) / 2
   // (half a mean free path) at the averaged extinction (SurfaceShading.h), all read at
   // lightPoint(i) as the in-scattering reads them.
-  auto reflected = [&](int i, const Vec3& x, double sigma, const Vec3& c)
+  auto reflected = [&](int i, double sigma, const Vec3& c)
   {
-    const SurfacePoint surface = surfaceAt(x, sigma);
+    const SurfacePoint surface = surfaceAt(i, sigma);
     Vec3 out{ 0, 0, 0 };
     if (!(surface.Probability > 0.0))
     {
@@ -387,7 +389,7 @@ void CastRay(const VolumeScene& scene,
         Vec3 field = c;
         if (surfaces)
         {
-          const SurfacePoint surface = surfaceAt(x, sigmaT);
+          const SurfacePoint surface = surfaceAt(i, sigmaT);
           Vec3 facing;
           field = DiffuseFieldColor(surface.Probability,
             p.Surface,
@@ -399,7 +401,7 @@ void CastRay(const VolumeScene& scene,
       // Surfaces: the direct light the sample reflects.
       if (surfaces && sigmaT > 0.0)
       {
-        L = L + reflected(i, x, sigmaT, c) * (T * (1.0 - extinction));
+        L = L + reflected(i, sigmaT, c) * (T * (1.0 - extinction));
       }
       // Ambient in-scattering from the ball around x' (eqs. 8.8-8.9), weighted by the
       // transmittance r before x'. x' is a sample, lag + 1 steps on, and the transmittance r

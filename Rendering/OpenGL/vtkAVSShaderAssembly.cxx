@@ -176,6 +176,7 @@ std::string vtkAVSShaderAssembly::PathTraceFragmentShader(const std::string& def
   Replace(fs, "//AVS::Classify::Dec", defines + avs_classify);
   Replace(fs, "//AVS::Lights::Dec", avs_lights);
   Replace(fs, "//AVS::Clip::Dec", avs_clip);
+  Replace(fs, "//AVS::Surface::Dec", avs_surface);
   return fs;
 }
 

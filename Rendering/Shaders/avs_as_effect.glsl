@@ -161,8 +161,60 @@ float Tube(int j, vec4 tubes0, vec4 tubes1)
   return j < 4 ? tubes0[clamp(j, 0, 3)] : tubes1[clamp(j - 4, 0, 3)];
 }
 
-// Surfaces inside the medium (avs_surface.glsl, with AVS_SURFACE).
+// Surfaces inside the medium (avs_surface.glsl, with AVS_SURFACE), and the lights' direct light
+// a surface sample reflects.
 //AVS::Surface::Dec
+#ifdef AVS_SURFACE
+// The light values LightSum read last (its tube transmittances and averaged sigma_t).
+vec4 g_surfaceTubes0 = vec4(1.0);
+vec4 g_surfaceTubes1 = vec4(1.0);
+float g_surfaceAveraged = 0.0;
+// The lights' direct light a surface reflects at the last SurfacePoint: sum_j E_j T_j f_d cos
+// (to be multiplied by the colour) and sum_j E_j T_j f_s cos.
+vec3 g_surfaceDiffuse = vec3(0.0);
+vec3 g_surfaceSpecular = vec3(0.0);
+
+// Light j's (a constant) share of them, the light at `world` with the tube transmittance
+// LightSum read there.
+void SurfaceLight(int j, vec3 world, vec3 direction, inout vec3 diffuse, inout vec3 specular)
+{
+  vec3 propagation, irradiance;
+  LightAt(j, world, propagation, irradiance);
+  vec2 r = SurfaceReflectance(g_surfaceNormal, -propagation, -direction);
+  vec3 arriving = irradiance * Tube(j, g_surfaceTubes0, g_surfaceTubes1);
+  diffuse += arriving * r.x;
+  specular += arriving * r.y;
+}
+
+// The direct light a surface reflects at a sample's light point `world` (where LightSum read
+// the light values last), with the last SurfaceGradientAt's normal.
+void SurfaceLights(vec3 world, vec3 direction)
+{
+  vec3 diffuse = vec3(0.0), specular = vec3(0.0);
+#define AVS_SURFACE_LIGHT(j) SurfaceLight(j, world, direction, diffuse, specular);
+  AVS_FOR_EACH_LIGHT(AVS_SURFACE_LIGHT)
+  g_surfaceDiffuse = diffuse;
+  g_surfaceSpecular = specular;
+}
+
+// A sample's light point (index `index`, world `world`): the gradient there and the direct
+// light a surface there reflects. Once per pair of samples where the lights are
+// (AVS_LIGHTS_PER_PAIR), for both, as the CPU reference does.
+void SurfacePoint(vec3 index, vec3 world, vec3 direction)
+{
+  SurfaceGradientAt(VolumeCoordinate(index), -direction);
+  SurfaceLights(world, direction);
+}
+
+// The direct light a sample (colour `color`, sigma_t `sigma`, P_s from SurfaceShareFor)
+// reflects per unit of T (1 - e^(-sigma dt)): albedo P_s e^(-l sigma~) (c D + S), l = min(r,
+// 1 / sigma) / 2.
+vec3 SurfaceReflected(vec3 color, float sigma)
+{
+  float ball = exp(-0.5 * min(u_ambientRadius, 1.0 / sigma) * g_surfaceAveraged);
+  return (color * g_surfaceDiffuse + g_surfaceSpecular) * (u_albedo * g_surfaceShare * ball);
+}
+#endif
 
 // E_j(x') A(theta_j; tau) of light j (a constant) at x'; `tube` is the light volume there (the
 // tube transmittance where the light enters the ball around x', Core/LightVolume.h), v the
@@ -342,6 +394,10 @@ void EffectLeap(int from, int to)
       // pair without material: neither sample would add them).
       float tp = LightT(max(pair, 0));
       g_pairLight = LightSum(io + tp * id, origin + tp * direction, direction);
+#ifdef AVS_SURFACE
+      // Surfaces: the pair's gradient and reflected light, at the same point.
+      SurfacePoint(io + tp * id, origin + tp * direction, direction);
+#endif
 #ifdef AVS_DIFFUSE
       // dphi/dt from the pair before (two steps back; 0 at the unsplit ray's first pair), its
       // phi read here where that pair had no material or was leapt over.
@@ -389,8 +445,9 @@ void EffectLeap(int from, int to)
       vec3 phi = ScatteredFluence(diffuse.rgb, diffuse.a, i, dt);
 #endif
 #ifdef AVS_SURFACE
-      // Surfaces reflect the diffuse field too (avs_surface.glsl).
-      SurfaceAt(coordinate, here.a);
+      // Surfaces reflect the diffuse field too (avs_surface.glsl), the gradient at the light
+      // point.
+      SurfaceAt(VolumeCoordinate(io + tl * id), here.a, -direction);
       L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * DiffuseFieldColor(here.rgb) * phi;
 #else
       L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * here.rgb * phi;
@@ -398,13 +455,15 @@ void EffectLeap(int from, int to)
     }
 #endif
 #if defined(AVS_SURFACE) && defined(AVS_LOOKAHEAD_EXPLICIT)
-    // Surfaces: the direct light the sample reflects, its lights read at its light point.
+    // Surfaces: the direct light the sample reflects, its lights and gradient read at its light
+    // point.
     if (here.a > 0.0 && T >= u_termination)
     {
       float ts = LightT(i);
-      SurfaceAt(coordinate, here.a);
       LightSum(io + ts * id, origin + ts * direction, direction); // (for its light values)
-      L += T * (1.0 - extinction) * SurfaceReflected(origin + ts * direction, direction, here.rgb, here.a);
+      SurfacePoint(io + ts * id, origin + ts * direction, direction);
+      SurfaceShareFor(here.a);
+      L += T * (1.0 - extinction) * SurfaceReflected(here.rgb, here.a);
     }
 #endif
 #ifdef AVS_EMISSION
@@ -424,14 +483,21 @@ void EffectLeap(int from, int to)
     {
       float lagged = mix(newer, older, g_lagFraction);
 #ifdef AVS_SURFACE
-      // Surfaces: the share of the volumetric light the sample returns.
-      SurfaceAt(coordinate, here.a);
+      // Surfaces: the share of the volumetric light the sample returns, the gradient at its
+      // light point (its pair's, from the pair's snippet; else its own, here).
+#ifndef AVS_SAMPLE_PAIRS
+      SurfaceGradientAt(coordinate, -direction);
+#endif
+      SurfaceShareFor(here.a);
       lagged *= VolumetricShare();
 #endif
 #ifdef AVS_SAMPLE_PAIRS
       L += lagged * dt * here.a * here.rgb * g_pairLight;
 #else
       L += lagged * dt * InScattered(here, t);
+#if defined(AVS_SURFACE)
+      SurfaceLights(origin + t * direction, direction); // with the lights just read
+#endif
 #endif
 #ifdef AVS_DIFFUSE
       // The extended model's diffuse light at the sample itself (T <= older: every sample
@@ -458,8 +524,7 @@ void EffectLeap(int from, int to)
       // (or its pair's) read.
       if (T >= u_termination)
       {
-        L += T * (1.0 - extinction) *
-          SurfaceReflected(origin + LightT(i) * direction, direction, here.rgb, here.a);
+        L += T * (1.0 - extinction) * SurfaceReflected(here.rgb, here.a);
       }
 #endif
     }
@@ -479,7 +544,7 @@ void EffectLeap(int from, int to)
         if (s1.a > 0.0)
         {
 #ifdef AVS_SURFACE
-          SurfaceAt(firstCoordinate, s1.a);
+          SurfaceAt(VolumeCoordinate(io + LightT(j) * id), s1.a, -direction);
           L += dt * VolumetricShare() * InScattered(s1, LightT(j));
 #else
           L += dt * InScattered(s1, LightT(j));
@@ -500,7 +565,7 @@ void EffectLeap(int from, int to)
       if (s2.a > 0.0)
       {
 #ifdef AVS_SURFACE
-        SurfaceAt(aheadCoordinate, s2.a);
+        SurfaceAt(VolumeCoordinate(io + LightT(i + g_lag + 1) * id), s2.a, -direction);
         lagged *= VolumetricShare();
 #endif
         L += lagged * dt * InScattered(s2, LightT(i + g_lag + 1));

@@ -10,6 +10,10 @@
 // sigma_t per data unit for each cell of u_cellSize voxels, avs::Majorants); directions come from
 // the Henyey-Greenstein phase function; the medium emits k_e (1 - albedo) sigma_t c; Russian
 // roulette ends the paths. The camera ray ends at the depth of the opaque geometry drawn before.
+// With surfaces inside the medium (AVS_SURFACE, avs_surface.glsl) a collision is a surface event
+// with probability P_s: next-event estimation through k_a c times the phase function plus the
+// BRDF, and the path goes on by the phase function (k_a), the diffuse lobe (k_d), the specular
+// lobe (k_s) or ends, as avs::RenderPathTraced.
 //
 // Distances t run along world rays; sigma_t is per data unit (the vtkVolume's coordinates before
 // its matrix), so a world step of length t crosses t * |d(index)/dt * spacing| data units, as the
@@ -51,6 +55,8 @@ const int ROULETTE_DEPTH = 4; // bounces before Russian roulette, as avs::PathTr
 //AVS::Lights::Dec
 
 //AVS::Clip::Dec
+
+//AVS::Surface::Dec
 
 // Random numbers: a permutation of 32-bit integers (a PCG output step), one stream per pixel and
 // sample.
@@ -253,6 +259,25 @@ vec3 NextEvent(int j, vec3 x, vec3 w)
   return irradiance * (HenyeyGreenstein(dot(propagation, -w), u_anisotropy) * T);
 }
 #define AVS_NEXT_EVENT(j) light += NextEvent(j, x, w);
+#ifdef AVS_SURFACE
+// Next-event estimation towards light j at a surface event (the last SurfaceAt's): k_a of a
+// phase-function event plus the BRDF, with the albedo (chromatic for all but the specular part).
+vec3 SurfaceNextEvent(int j, vec3 x, vec3 w, vec3 albedo)
+{
+  vec3 propagation, irradiance;
+  LightAt(j, x, propagation, irradiance);
+  if (!(max(max(irradiance.r, irradiance.g), irradiance.b) > 0.0))
+    return vec3(0.0);
+  float distance = LightIsPositional(j) ? length(u_lightPosition[j] - x) : FAR;
+  float T = Transmittance(x, -propagation, distance);
+  if (!(T > 0.0))
+    return vec3(0.0);
+  float phase = HenyeyGreenstein(dot(propagation, -w), u_anisotropy);
+  vec2 r = SurfaceReflectance(g_surfaceNormal, -propagation, -w);
+  return irradiance * T * (albedo * (u_surfaceCoefficients.x * phase + r.x) + u_albedo * r.y);
+}
+#define AVS_SURFACE_NEXT_EVENT(j) light += SurfaceNextEvent(j, x, w, albedo);
+#endif
 #endif
 
 void main()
@@ -294,12 +319,67 @@ void main()
     if (!(max(max(albedo.r, albedo.g), albedo.b) > 0.0))
       break;
     vec3 light = vec3(0.0);
+#ifdef AVS_SURFACE
+    // A surface event with probability P_s (avs_surface.glsl).
+    vec3 index = (u_worldToIndex * vec4(x, 1.0)).xyz;
+    SurfaceAt((index + 0.5) / u_dimensions, medium.a, -w);
+    bool surface = g_surfaceShare > 0.0 && Uniform() < g_surfaceShare;
+    if (surface)
+    {
+#ifdef AVS_POSITIONAL_LIGHTS
+      AVS_FOR_EACH_LIGHT(AVS_SURFACE_NEXT_EVENT)
+#endif
+      L += beta * light;
+      // Go on by the lobe chosen with the coefficients' weights (each one's f cos / pdf over
+      // its probability: albedo c for the phase function and the diffuse lobe, the albedo
+      // times (p + 2) / (p + 1) cos for the specular one).
+      vec4 k = u_surfaceCoefficients;
+      vec3 v = -w;
+      vec3 n = dot(g_surfaceNormal, v) < 0.0 && u_surfaceTwoSided == 1 ? -g_surfaceNormal
+                                                                       : g_surfaceNormal;
+      float u = Uniform();
+      if (u < k.x)
+      {
+        beta *= albedo;
+        w = SampleHenyeyGreenstein(w, u_anisotropy);
+      }
+      else if (g_surfaceFacing && u < k.x + k.y)
+      {
+        beta *= albedo;
+        w = SampleCosine(n, Uniform(), Uniform());
+      }
+      else if (g_surfaceFacing && u < k.x + k.y + k.z)
+      {
+        vec3 mirror = normalize(n * (2.0 * dot(n, v)) - v);
+        vec3 d = SamplePhongLobe(mirror, k.w, Uniform(), Uniform());
+        float cosine = dot(n, d);
+        if (!(cosine > 0.0))
+          break;
+        beta *= u_albedo * (k.w + 2.0) / (k.w + 1.0) * cosine;
+        w = d;
+      }
+      else
+      {
+        break; // absorbed
+      }
+    }
+    else
+    {
+#ifdef AVS_POSITIONAL_LIGHTS
+      AVS_FOR_EACH_LIGHT(AVS_NEXT_EVENT)
+#endif
+      L += beta * albedo * light;
+      beta *= albedo;
+      w = SampleHenyeyGreenstein(w, u_anisotropy);
+    }
+#else
 #ifdef AVS_POSITIONAL_LIGHTS
     AVS_FOR_EACH_LIGHT(AVS_NEXT_EVENT)
 #endif
     L += beta * albedo * light;
     beta *= albedo;
     w = SampleHenyeyGreenstein(w, u_anisotropy);
+#endif
     limit = FAR;
     if (bounce >= ROULETTE_DEPTH)
     {

@@ -1,11 +1,12 @@
 // Surfaces inside the medium: the GPU twin of Rendering/Core/SurfaceShading.h, which defines
-// every term (the CPU reference, ReferenceRenderer.cxx, computes the same sums). Defined with
-// AVS_SURFACE (ShadeOn, VolumetricScatteringBlending below 2): a sample with extinction returns
-// VolumetricShare() of its volumetric light (the ball's in-scattering, the extended model's
-// diffuse light) and reflects the lights' direct light with the BRDF (SurfaceReflected), P_s and
-// the normal from the gradient of component AVS_SURFACE_COMPONENT (SurfaceAt: VTK's central
-// differences, one voxel on either side); the extended model's diffuse field it returns with
-// DiffuseFieldColor. Inserted into ambient scattering's declarations.
+// every term (the CPU reference, ReferenceRenderer.cxx, and the CPU path tracer compute the same).
+// Defined with AVS_SURFACE (ShadeOn, VolumetricScatteringBlending below 2): P_s and the normal
+// from the gradient of component AVS_SURFACE_COMPONENT (SurfaceAt: VTK's central differences,
+// one voxel on either side), what a sample returns of the volumetric light (VolumetricShare)
+// and of the extended model's diffuse field (DiffuseFieldColor), the BRDF (SurfaceReflectance)
+// and its lobes (SampleCosine, SamplePhongLobe). Shared by ambient scattering's ray casting
+// (avs_as_effect.glsl, which adds the lights' direct light, SurfaceReflected) and the path
+// tracer (avs_pathtrace_fs.glsl, its surface events), after their classification and lights.
 #ifdef AVS_SURFACE
 uniform float u_surfaceBlending;     // B in [0, 2]
 uniform vec4 u_surfaceCoefficients;  // k_a, k_d, k_s, p (resolved: k_a + k_d + k_s <= 1)
@@ -16,10 +17,7 @@ uniform mat3 u_gradientToWorld;      // the transpose of d index / d world
 float g_surfaceShare = 0.0;          // P_s of the last SurfaceAt
 vec3 g_surfaceNormal = vec3(0.0);    // its normal, world space
 bool g_surfaceFacing = false;        // whether it reflects towards the camera (SurfaceShading.h)
-// The light values LightSum read last (its tube transmittances and averaged sigma_t).
-vec4 g_surfaceTubes0 = vec4(1.0);
-vec4 g_surfaceTubes1 = vec4(1.0);
-float g_surfaceAveraged = 0.0;
+float g_surfaceGamma = -1.0;         // the normalised gradient there (-1: none)
 
 float SurfaceProbability(float gamma, float alpha)
 {
@@ -30,9 +28,9 @@ float SurfaceProbability(float gamma, float alpha)
   return (1.0 - exp(-g)) * (1.0 - volumetric);
 }
 
-// P_s and the normal of the sample at volume texture coordinate `coordinate` with sigma_t
-// `sigma`, into g_surfaceShare and g_surfaceNormal.
-void SurfaceAt(vec3 coordinate, float sigma)
+// The gradient at volume texture coordinate `coordinate`: gamma, the normal and whether the
+// surface reflects towards `toViewer`, into g_surfaceGamma, g_surfaceNormal, g_surfaceFacing.
+void SurfaceGradientAt(vec3 coordinate, vec3 toViewer)
 {
   vec3 g = vec3(0.0);
   for (int a = 0; a < 3; ++a)
@@ -48,11 +46,24 @@ void SurfaceAt(vec3 coordinate, float sigma)
   }
   vec3 world = u_gradientToWorld * g;
   float len = length(world);
-  float gamma = 2.0 * length(g * u_gradientScale);
-  float alpha = 1.0 - exp(-sigma * u_unitDistance[0]);
-  g_surfaceShare = len > 0.0 ? SurfaceProbability(gamma, alpha) : 0.0;
+  g_surfaceGamma = len > 0.0 ? 2.0 * length(g * u_gradientScale) : -1.0;
   g_surfaceNormal = len > 0.0 ? world * (-1.0 / len) : vec3(0.0);
-  g_surfaceFacing = u_surfaceTwoSided == 1 || dot(g_surfaceNormal, -direction) > 0.0;
+  g_surfaceFacing = u_surfaceTwoSided == 1 || dot(g_surfaceNormal, toViewer) > 0.0;
+}
+
+// P_s of a sample with sigma_t `sigma` at the last SurfaceGradientAt's gradient, into
+// g_surfaceShare (0 where the gradient vanishes).
+void SurfaceShareFor(float sigma)
+{
+  float alpha = 1.0 - exp(-sigma * u_unitDistance[0]);
+  g_surfaceShare = g_surfaceGamma >= 0.0 ? SurfaceProbability(g_surfaceGamma, alpha) : 0.0;
+}
+
+// Both, for a sample at `coordinate`.
+void SurfaceAt(vec3 coordinate, float sigma, vec3 toViewer)
+{
+  SurfaceGradientAt(coordinate, toViewer);
+  SurfaceShareFor(sigma);
 }
 
 // What the last SurfaceAt's sample returns of the volumetric light: 1 - P_s (1 - k_a).
@@ -94,26 +105,23 @@ vec2 SurfaceReflectance(vec3 n, vec3 toLight, vec3 toViewer)
     u_surfaceCoefficients.z * (p + 2.0) / (2.0 * PI) * exp2(p * log2(max(rv, 1e-30))) * nl);
 }
 
-// Light j's (a constant) direct light that the last SurfaceAt's sample (colour `color`)
-// reflects towards the camera, the light at `world` with the tube transmittance LightSum read
-// there, `ball` the transmittance through the ball at the averaged sigma_t.
-vec3 SurfaceLight(int j, vec3 world, vec3 direction, vec3 color, float ball)
+// A direction at polar cosine `cosTheta` and azimuth `phi` about the unit vector `axis`.
+vec3 AboutAxis(vec3 axis, float cosTheta, float phi)
 {
-  vec3 propagation, irradiance;
-  LightAt(j, world, propagation, irradiance);
-  vec2 r = SurfaceReflectance(g_surfaceNormal, -propagation, -direction);
-  return irradiance * (color * r.x + r.y) * (Tube(j, g_surfaceTubes0, g_surfaceTubes1) * ball);
+  vec3 a = abs(axis.x) > 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+  vec3 b1 = normalize(cross(axis, a));
+  vec3 b2 = cross(axis, b1);
+  float s = sqrt(max(0.0, 1.0 - cosTheta * cosTheta));
+  return normalize(cosTheta * axis + s * (cos(phi) * b1 + sin(phi) * b2));
 }
-
-// The direct light the last SurfaceAt's sample (sigma_t `sigma`) reflects per unit of T (1 -
-// e^(-sigma dt)): albedo P_s sum_j E_j T_j e^(-l sigma~) f cos, l = min(r, 1 / sigma) / 2, the
-// lights as LightSum read them last.
-vec3 SurfaceReflected(vec3 world, vec3 direction, vec3 color, float sigma)
+// Cosine-weighted about n (pdf cos / pi) and within the Phong lobe of power p about `mirror`
+// (pdf (p + 1) / (2 pi) cos^p), from two uniform numbers (avs::SampleCosine, SamplePhongLobe).
+vec3 SampleCosine(vec3 n, float u1, float u2)
 {
-  float ball = exp(-0.5 * min(u_ambientRadius, 1.0 / sigma) * g_surfaceAveraged);
-  vec3 reflected = vec3(0.0);
-#define AVS_REFLECT_LIGHT(j) reflected += SurfaceLight(j, world, direction, color, ball);
-  AVS_FOR_EACH_LIGHT(AVS_REFLECT_LIGHT)
-  return reflected * (u_albedo * g_surfaceShare);
+  return AboutAxis(n, sqrt(u1), 2.0 * PI * u2);
+}
+vec3 SamplePhongLobe(vec3 mirror, float p, float u1, float u2)
+{
+  return AboutAxis(mirror, exp2(log2(max(u1, 1e-30)) / (p + 1.0)), 2.0 * PI * u2);
 }
 #endif

@@ -2,8 +2,9 @@
 // property's ShadeOn.
 //
 // - The GPU mapper against the CPU reference with ShadeOn, in both models, at blendings 0 and 1,
-//   lit on two sides and on one, with VTK's coefficients and with a sharper specular lobe: PSNR
-//   at least 55 dB, as the unshaded comparison demands (TestMappersAgainstReference).
+//   lit on two sides and on one, with VTK's coefficients and with a sharper specular lobe, split
+//   into bricks, and with a radius too large for the ring (the explicit look-ahead): PSNR at
+//   least 55 dB, as the unshaded comparison demands (TestMappersAgainstReference).
 // - ShadeOff, and ShadeOn at VolumetricScatteringBlending 2, give the unshaded picture bit for
 //   bit; ShadeOn at the default blending differs from it clearly.
 // - The surface term and its normal: a solid ball lit on one side only by a light behind the
@@ -33,6 +34,9 @@ struct Case
   bool TwoSided;
   double Specular;
   double SpecularPower;
+  double Radius = 0.08;
+  double Step = 0.02;
+  bool Bricked = false;
 };
 
 // A solid ball of value 900 (radius 0.6) with a smooth edge, in a box of side 2.
@@ -110,11 +114,11 @@ int main(int argc, char* argv[])
     cpu->SetVolumeProperty(property);
     cpu->SetRenderer(renderer);
     cpu->SetImageSize(size, size);
-    cpu->SetSampleDistance(0.02);
+    cpu->SetSampleDistance(c.Step);
     cpu->SetRenderMode(vtkVolumeReferenceRenderer::AMBIENT_SCATTERING);
     cpu->SetScatteringModel(c.Extended ? vtkVolumeReferenceRenderer::ExtendedModel
                                        : vtkVolumeReferenceRenderer::PaperModel);
-    cpu->SetAmbientRadius(0.08);
+    cpu->SetAmbientRadius(c.Radius);
     cpu->SetAnisotropy(0.3);
     cpu->SetVolumetricScatteringBlending(c.Blending);
     ShowLinear(cpu.Get());
@@ -131,6 +135,9 @@ int main(int argc, char* argv[])
     renderer->SetTwoSidedLighting(c.TwoSided);
     property->SetSpecular(c.Specular);
     property->SetSpecularPower(c.SpecularPower);
+    mapper->SetAmbientRadius(c.Radius);
+    mapper->SetSampleDistance(c.Step);
+    mapper->SetPartitions(c.Bricked ? 2 : 1, c.Bricked ? 2 : 1, 1);
   };
 
   // ShadeOff, and ShadeOn with blending 2: the unshaded picture, bit for bit.
@@ -156,6 +163,9 @@ int main(int argc, char* argv[])
     { "extended_b0_one", true, 0.0f, false, 0.5, 30.0 },
     { "extended_b1_two", true, 1.0f, true, 0.2, 10.0 },
     { "paper_b15_one", false, 1.5f, false, 0.2, 10.0 },
+    { "extended_b0_bricks", true, 0.0f, true, 0.2, 10.0, 0.08, 0.02, true },
+    // 2 r / step > vtkAVSRayCaster::MaximumRingSize: the explicit look-ahead.
+    { "extended_b0_explicit", true, 0.0f, true, 0.2, 10.0, 1.2, 0.004 },
   };
   for (const Case& c : cases)
   {
@@ -182,6 +192,7 @@ int main(int argc, char* argv[])
   front->SetFocalPoint(0, 0, 0);
   renderer->AddLight(front);
   const Case sided{ "sided", true, 0.0f, false, 0.2, 10.0 };
+  mapper->SetInputData(volumeData);
   setCase(sided);
   auto reflecting = render();
   auto reflectingCpu = reference(sided);

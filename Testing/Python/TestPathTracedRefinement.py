@@ -5,7 +5,9 @@
   level of 1 % with the Sidak correction (as Mitsuba tests its integrators), on two scenes that
   use what the mapper draws: a directional light and an attenuated spot, a clipping plane,
   cropping, a label map, anisotropy and emission; two independent components with NaN voxels, a
-  binary mask and a point light.
+  binary mask and a point light; and on the wavelet with surfaces inside the medium (ShadeOn,
+  a sharper specular lobe, VolumetricScatteringBlending 0.5, lit on one side), whose surface
+  events both path tracers trace.
 - Its RMSE against a converged picture falls as 1/sqrt(spp); the picture shown is never worse
   than the ambient-scattering picture and reaches half its RMSE; the shown picture is the
   reference blend (Rendering/Core/Refinement.h) of the buffers.
@@ -142,6 +144,17 @@ def components_scene(size):
     renderer.AddLight(light(True, (25, 20, 20), 2.0, (1, 1, 0.9), 90.0, (0.5, 0.02, 0.0)))
     settings = dict(Albedo=0.9, Anisotropy=-0.2, EmissionWeight=0.0)
     return image, (mask, "Binary"), prop, renderer, None, None, settings
+
+
+def surface_scene(size):
+    """The wavelet with ShadeOn: surface events (Rendering/Core/SurfaceShading.h)."""
+    data, mask, prop, renderer, planes, cropping, settings = wavelet_scene(size)
+    prop.ShadeOn()
+    prop.SetSpecular(0.4)
+    prop.SetSpecularPower(20.0)
+    renderer.TwoSidedLightingOff()
+    settings["VolumetricScatteringBlending"] = 0.5
+    return data, mask, prop, renderer, planes, cropping, settings
 
 
 def configure(target, data, mask, planes, cropping, settings):
@@ -292,7 +305,8 @@ def framebuffer(window, size, depth=False):
 def main():
     spp = 256
     # 1. The estimator against the CPU path tracer.
-    for name, make, size in (("wavelet", wavelet_scene, 64), ("components", components_scene, 48)):
+    for name, make, size in (("wavelet", wavelet_scene, 64), ("components", components_scene, 48),
+                             ("surfaces", surface_scene, 48)):
         scene = make(size)
         window, mapper, _ = gpu_window(scene, size)
         window.Render()

@@ -9,12 +9,19 @@ ambient-scattering picture must have
 - at most 2 % of its pixels saturated in any channel (VTK's: none);
 - at least half the detail of the paper's model shown at its own best exposure (the largest linear
   exposure that saturates at most 2 %), the detail being the mean absolute Laplacian of the
-  luminance: a transform that flattened the picture would fail here.
+  luminance: a transform that flattened the picture would fail here;
+- with ShadeOn (the script's, at the default VolumetricScatteringBlending: surfaces inside the
+  medium), on the volumes with surfaces (the CT-like head, the MRI brain, a flow field whose
+  transfer function picks out its shear layer) at least 0.6 times the detail of VTK's shaded
+  picture, and on the soft media (the smoke, the cloud) no less detail than the unshaded picture
+  (blending 2) has.
 
 Volumes: the embryo, the hydrogen orbital, the smoke and the cloud from the shared data folder
 (skipped where absent), a CT-like head made here (a phantom with skin, skull, orbits and brain in
-Hounsfield-like units, int16) and a real T1 MRI brain, Colin 27 as Debian's mricron-data ships it
-(ch2bet.nii.gz, brain only, so its gyri show). The volumes found are checked; with fewer than
+Hounsfield-like units, int16), a real T1 MRI brain, Colin 27 as Debian's mricron-data ships it
+(ch2bet.nii.gz, brain only, so its gyri show), and a flow field made here (the vorticity of a
+round jet whose shear layer is wrinkled and rolls up into rings), seen through a transfer
+function that picks out the layer. The volumes found are checked; with fewer than
 four (the shared data folder absent) the test then reports itself skipped.
 
 Usage: TestSwapMapper.py DATA_DIR [MRI_FILE]"""
@@ -83,6 +90,38 @@ def ct_head(n=112):
     return image
 
 
+def jet(n=96):
+    """The vorticity magnitude of a round jet along z: a thin shear layer at the jet's edge,
+    wrinkled azimuthally and along the jet, rolling up into rings downstream, with mild noise
+    (float32). Its transfer function picks out the layer (FEATURE_OPACITY)."""
+    z, y, x = np.mgrid[-1:1:n * 1j, -1:1:n * 1j, -1:1:n * 1j]
+    r = np.sqrt(x * x + y * y)
+    theta = np.arctan2(y, x)
+    growth = 0.5 * (z + 1.0)  # 0 at the nozzle, 1 downstream
+    edge = 0.35 + 0.08 * growth + 0.04 * growth * np.sin(5 * theta + 3 * z) \
+        + 0.05 * growth * np.sin(9 * z)
+    thickness = 0.025 + 0.03 * growth
+    sheet = np.exp(-((r - edge) / thickness) ** 2)
+    rings = sum(np.exp(-(((r - edge) ** 2 + (z - zc) ** 2) / (0.06 + 0.04 * (zc + 1)) ** 2))
+                for zc in (-0.2, 0.25, 0.65))
+    v = (sheet * (1.0 - 0.3 * growth) + 0.5 * rings) * (np.abs(z) < 0.95)
+    v += np.random.default_rng(2).normal(0.0, 0.01, v.shape)
+    image = vtkImageData()
+    image.SetDimensions(n, n, n)
+    image.SetSpacing(1.0, 1.0, 1.0)  # a simulation's grid units
+    scalars = numpy_to_vtk(v.astype(np.float32).ravel(), deep=1)
+    scalars.SetName("vorticity")
+    image.GetPointData().SetScalars(scalars)
+    return image
+
+
+# The flow field's transfer function: opacity only on the shear layer's strong vorticity (a
+# tent from 40 % to 100 % of the range), as a user picks out a feature.
+FEATURE_OPACITY = ((0.0, 0.0), (0.4, 0.0), (0.7, 0.5), (1.0, 0.8))
+SURFACES = ("CT-like head (made here)", "MRI brain ch2bet.nii.gz", "flow field: jet (made here)")
+SOFT = ("openvdb_smoke1.vdb", "wdas_cloud_sixteenth.vdb")
+
+
 def read(reader, path):
     reader.SetFileName(path)
     reader.Update()
@@ -101,6 +140,7 @@ def volumes(data, mri):
         else:
             print("not found, left out: %s" % path)
     yield "CT-like head (made here)", ct_head()
+    yield "flow field: jet (made here)", jet()
     if os.path.isfile(mri):
         yield "MRI brain " + os.path.basename(mri), read(vtkNIFTIImageReader(), mri)
     else:
@@ -118,16 +158,21 @@ def grab(window):
     return vtk_to_numpy(out.GetPointData().GetScalars()).reshape(h, w, 3).astype(float)
 
 
-def user_script(image, mapper, lighting):
-    """What a VTK user writes: a shaded volume property, a camera, the renderer's lights.
-    Returns the picture (rows x columns x RGB, 0-255) and the number of errors."""
+def user_script(image, mapper, lighting, feature=False):
+    """What a VTK user writes: a shaded volume property, a camera, the renderer's lights (with
+    `feature`, the transfer function picks out a feature: FEATURE_OPACITY). Returns the picture
+    (rows x columns x RGB, 0-255) and the number of errors."""
     lo, hi = image.GetScalarRange()
     color = vtkColorTransferFunction()
     color.AddRGBPoint(lo, 0.9, 0.6, 0.4)
     color.AddRGBPoint(hi, 1.0, 1.0, 0.95)
     opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(lo + 0.2 * (hi - lo), 0.0)
-    opacity.AddPoint(hi, 0.6)
+    if feature:
+        for at, value in FEATURE_OPACITY:
+            opacity.AddPoint(lo + at * (hi - lo), value)
+    else:
+        opacity.AddPoint(lo + 0.2 * (hi - lo), 0.0)
+        opacity.AddPoint(hi, 0.6)
     prop = vtkVolumeProperty()
     prop.SetColor(color)
     prop.SetScalarOpacity(opacity)
@@ -188,7 +233,7 @@ def detail(picture, footprint):
     return np.abs(lap[inner]).mean() / y[inner].mean()
 
 
-def paper_at_best_exposure(image, lighting, footprint):
+def paper_at_best_exposure(image, lighting, footprint, feature=False):
     """The paper's model without tone curve at the largest exposure that saturates at most 2 %
     of the footprint: from a dim picture, the exposure that puts its 98th percentile of
     max(R, G, B) at 254, lowered by a tenth until the saturation is within 2 %."""
@@ -197,7 +242,7 @@ def paper_at_best_exposure(image, lighting, footprint):
         mapper.SetScatteringModelToPaper()
         mapper.SetToneMappingToClamp()
         mapper.SetExposure(exposure)
-        return user_script(image, mapper, lighting)[0]
+        return user_script(image, mapper, lighting, feature)[0]
 
     dim = 0.125
     peak = np.percentile(paper(dim).max(axis=-1)[footprint], 98) / dim
@@ -213,14 +258,16 @@ def paper_at_best_exposure(image, lighting, footprint):
 def main(data, mri):
     failures = []
     found = 0
-    print("%-34s %-10s %6s %6s %5s %6s %6s %6s %6s" % ("volume", "lights", "VTK", "ours", "ratio",
-                                                       "sat %", "detail", "paper", "(exp)"))
+    print("%-30s %-10s %6s %6s %5s %5s %6s %6s %5s %6s %6s" % (
+        "volume", "lights", "VTK", "ours", "ratio", "sat %", "detail", "paper", "(exp)",
+        "d/VTK", "d/off"))
     for name, image in volumes(data, mri):
         found += 1
+        feature = name.startswith("flow field")
         for lighting in LIGHTINGS:
-            vtk, _ = user_script(image, vtkGPUVolumeRayCastMapper(), lighting)
+            vtk, _ = user_script(image, vtkGPUVolumeRayCastMapper(), lighting, feature)
             ours, errors = user_script(
-                image, ambientscattering.vtkAmbientScatteringVolumeMapper(), lighting)
+                image, ambientscattering.vtkAmbientScatteringVolumeMapper(), lighting, feature)
             footprint = (vtk.max(axis=-1) > 2) | (ours.max(axis=-1) > 2)
             if footprint.sum() < 200:
                 failures.append("%s, %s: footprint of %d pixels" % (name, lighting,
@@ -228,11 +275,20 @@ def main(data, mri):
                 continue
             ratio = ours[footprint].mean() / max(vtk[footprint].mean(), 1e-6)
             share = saturated(ours, footprint)
-            exposure, paper = paper_at_best_exposure(image, lighting, footprint)
+            exposure, paper = paper_at_best_exposure(image, lighting, footprint, feature)
             ours_detail, paper_detail = detail(ours, footprint), detail(paper, footprint)
-            print("%-34s %-10s %6.1f %6.1f %5.2f %6.2f %6.4f %6.4f %6.2f"
-                  % (name, lighting, vtk[footprint].mean(), ours[footprint].mean(), ratio,
-                     100 * share, ours_detail, paper_detail, exposure))
+            # Surfaces inside the medium: the detail against VTK's shaded picture, and against
+            # the unshaded picture (blending 2: ours before ShadeOn meant anything).
+            vtk_ratio = ours_detail / max(detail(vtk, footprint), 1e-9)
+            off_ratio = float("nan")
+            if name in SOFT:
+                unshaded = ambientscattering.vtkAmbientScatteringVolumeMapper()
+                unshaded.SetVolumetricScatteringBlending(2.0)
+                off = user_script(image, unshaded, lighting, feature)[0]
+                off_ratio = ours_detail / max(detail(off, footprint), 1e-9)
+            print("%-30s %-10s %6.1f %6.1f %5.2f %5.2f %6.4f %6.4f %5.2f %6.2f %6.2f"
+                  % (name[:30], lighting, vtk[footprint].mean(), ours[footprint].mean(), ratio,
+                     100 * share, ours_detail, paper_detail, exposure, vtk_ratio, off_ratio))
             what = "%s, %s" % (name, lighting)
             if errors:
                 failures.append("%s: %d errors" % (what, errors))
@@ -243,6 +299,12 @@ def main(data, mri):
             if ours_detail < 0.5 * paper_detail:
                 failures.append("%s: detail %.4f, under half the paper's model's %.4f"
                                 % (what, ours_detail, paper_detail))
+            if name in SURFACES and vtk_ratio < 0.6:
+                failures.append("%s: detail %.2f x VTK's shaded picture's (at least 0.6)"
+                                % (what, vtk_ratio))
+            if name in SOFT and off_ratio < 1.0:
+                failures.append("%s: detail %.2f x the unshaded picture's (at least 1)"
+                                % (what, off_ratio))
             if saturated(vtk, footprint) > 0.0:
                 print("  (VTK's picture saturates %.1f %%)" % (100 * saturated(vtk, footprint)))
     for f in failures:

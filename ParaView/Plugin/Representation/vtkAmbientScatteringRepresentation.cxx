@@ -63,6 +63,17 @@ double vtkAmbientScatteringRepresentation::GetAlbedo()
   return this->AmbientScatteringMapper->GetAlbedo();
 }
 
+void vtkAmbientScatteringRepresentation::SetVolumetricScatteringBlending(float blending)
+{
+  this->Superclass::SetVolumetricScatteringBlending(blending);
+  this->AmbientScatteringMapper->SetVolumetricScatteringBlending(blending);
+}
+
+float vtkAmbientScatteringRepresentation::GetVolumetricScatteringBlending()
+{
+  return this->AmbientScatteringMapper->GetVolumetricScatteringBlending();
+}
+
 void vtkAmbientScatteringRepresentation::SetExposure(double exposure)
 {
   this->AmbientScatteringMapper->SetExposure(exposure);
@@ -289,6 +300,8 @@ void vtkAmbientScatteringRepresentation::PrintSelf(ostream& os, vtkIndent indent
      << "\n";
   os << indent << "AutoExposure: " << (this->GetAutoExposure() ? "On" : "Off") << "\n";
   os << indent << "ScatteringAnisotropy: " << this->GetScatteringAnisotropy() << "\n";
+  os << indent << "VolumetricScatteringBlending: " << this->GetVolumetricScatteringBlending()
+     << "\n";
   os << indent << "AmbientRadius: " << this->GetAmbientRadius() << "\n";
   os << indent << "LightScale: " << this->GetLightScale() << "\n";
   os << indent << "EmissionWeight: " << this->GetEmissionWeight() << "\n";

@@ -15,6 +15,10 @@
  * ScatteringAnisotropy to ambient scattering; AmbientRadius, EmissionWeight, LightScale and
  * LightVolumeMaximumDimension to ambient scattering and to ambient occlusion (as its
  * OcclusionRadius, EmissionWeight, LightScale and OcclusionVolumeMaximumDimension).
+ *
+ * ParaView's own Shade, Ambient, Diffuse, Specular and SpecularPower set the vtkVolumeProperty,
+ * with which ambient scattering shades surfaces inside the medium; its Volumetric Scattering
+ * Blending (SetVolumetricScatteringBlending) reaches the ambient-scattering mapper too.
  */
 #ifndef vtkAmbientScatteringRepresentation_h
 #define vtkAmbientScatteringRepresentation_h
@@ -76,6 +80,16 @@ public:
   int GetToneMapping();
   void SetAutoExposure(int on);
   int GetAutoExposure();
+  ///@}
+
+  ///@{
+  /**
+   * ParaView's VolumetricScatteringBlending property: the superclass's (for its own mapper) and
+   * vtkAmbientScatteringVolumeMapper::SetVolumetricScatteringBlending (0-2, default 0, with
+   * Shade: surfaces inside the medium).
+   */
+  void SetVolumetricScatteringBlending(float blending);
+  float GetVolumetricScatteringBlending();
   ///@}
 
   ///@{
