@@ -3,8 +3,9 @@
 //
 // - The GPU mapper against the CPU reference with ShadeOn, in both models, at blendings 0 and 1,
 //   lit on two sides and on one, with VTK's coefficients and with a sharper specular lobe, split
-//   into bricks, and with a radius too large for the ring (the explicit look-ahead): PSNR at
-//   least 55 dB, as the unshaded comparison demands (TestMappersAgainstReference).
+//   into bricks, with the lights (and the surfaces) read per sample instead of per pair, and with
+//   a radius too large for the ring (the explicit look-ahead): PSNR at least 55 dB, as the
+//   unshaded comparison demands (TestMappersAgainstReference).
 // - ShadeOff, and ShadeOn at VolumetricScatteringBlending 2, give the unshaded picture bit for
 //   bit; ShadeOn at the default blending differs from it clearly.
 // - The surface term and its normal: a solid ball lit on one side only by a light behind the
@@ -164,6 +165,8 @@ int main(int argc, char* argv[])
     { "extended_b1_two", true, 1.0f, true, 0.2, 10.0 },
     { "paper_b15_one", false, 1.5f, false, 0.2, 10.0 },
     { "extended_b0_bricks", true, 0.0f, true, 0.2, 10.0, 0.08, 0.02, true },
+    // Two steps longer than a cell of the light grid: the lights, and the surfaces, per sample.
+    { "extended_b0_per_sample", true, 0.0f, false, 0.2, 10.0, 0.08, 0.04 },
     // 2 r / step > vtkAVSRayCaster::MaximumRingSize: the explicit look-ahead.
     { "extended_b0_explicit", true, 0.0f, true, 0.2, 10.0, 1.2, 0.004 },
   };
