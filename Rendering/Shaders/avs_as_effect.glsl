@@ -448,7 +448,8 @@ void EffectLeap(int from, int to)
       // Surfaces reflect the diffuse field too (avs_surface.glsl), the gradient at the light
       // point.
       SurfaceAt(VolumeCoordinate(io + tl * id), here.a, -direction);
-      L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * DiffuseFieldColor(here.rgb) * phi;
+      L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * DiffuseFieldColor(here.rgb) *
+        phi;
 #else
       L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * here.rgb * phi;
 #endif
