@@ -129,7 +129,8 @@ void vtkAVSVolumeMapper::AssembleFrame(vtkRenderer* renderer,
   frame.WholeDimensions = in.Whole.Dimensions;
   frame.PieceOffset = in.PieceOffset;
   frame.Lights = in.WorldLights;
-  frame.ShadingInverseRange = avs::Classifier(in.Scene).ShadingInverseRange();
+  frame.ShadingInverseRange =
+    in.Parameters.Surface.Active() ? avs::Classifier(in.Scene).ShadingInverseRange() : 1.0;
   frame.Jitter = this->UseJittering != 0;
   frame.Prop = volume;
   frame.Mapper = this;

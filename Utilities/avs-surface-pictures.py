@@ -32,18 +32,15 @@ LIGHTING = "light kit"
 
 
 def path_traced(image, feature, samples):
-    """The user's scene through vtkVolumeReferenceRenderer's path tracer, as 0-255 RGB."""
-    captured = {}
+    """The user's scene (its renderer's lights and camera, its property) through
+    vtkVolumeReferenceRenderer's path tracer, as 0-255 RGB rows bottom first."""
     mapper = ambientscattering.vtkAmbientScatteringVolumeMapper()
-    # Render the user's script once to build its renderer, then path-trace that renderer.
-    original = swap.grab
+    captured = {}
 
-    def grab(window):
-        renderer = window.GetRenderers().GetFirstRenderer()
-        volume = renderer.GetVolumes().GetLastProp()
+    def trace(renderer):
         ref = ambientscattering.vtkVolumeReferenceRenderer()
         ref.SetInputData(image)
-        ref.SetVolumeProperty(volume.GetProperty())
+        ref.SetVolumeProperty(renderer.GetVolumes().GetLastProp().GetProperty())
         ref.SetRenderer(renderer)
         ref.SetImageSize(swap.SIZE, swap.SIZE)
         ref.SetRenderModeToPathTracing()
@@ -51,16 +48,10 @@ def path_traced(image, feature, samples):
         ref.SetExposure(mapper.GetExposure())
         ref.SetToneMappingToShoulder()
         ref.Update()
-        out = ref.GetOutput()
-        rgb = vtk_to_numpy(out.GetPointData().GetScalars())
+        rgb = vtk_to_numpy(ref.GetOutput().GetPointData().GetScalars())
         captured["picture"] = rgb.reshape(swap.SIZE, swap.SIZE, -1)[..., :3].astype(float)
-        return original(window)
 
-    swap.grab = grab
-    try:
-        swap.user_script(image, mapper, LIGHTING, feature)
-    finally:
-        swap.grab = original
+    swap.user_script(image, mapper, LIGHTING, feature, inspect=trace)
     return captured["picture"]
 
 

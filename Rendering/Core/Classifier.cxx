@@ -143,9 +143,8 @@ void Classifier::SampleClamped(const Vec3& index, double s[4]) const
   }
 }
 
-std::array<double, 4> Classifier::GradientMagnitudes(const Vec3& index) const
+void Classifier::CentralDifferences(const Vec3& index, double d[3][4]) const
 {
-  std::array<double, 4> squared{ 0, 0, 0, 0 };
   for (int a = 0; a < 3; ++a)
   {
     Vec3 e{ 0, 0, 0 };
@@ -155,7 +154,21 @@ std::array<double, 4> Classifier::GradientMagnitudes(const Vec3& index) const
     this->SampleClamped(index - e, minus);
     for (int c = 0; c < this->Count; ++c)
     {
-      const double g = (plus[c] - minus[c]) * this->GradientScale[a];
+      d[a][c] = plus[c] - minus[c];
+    }
+  }
+}
+
+std::array<double, 4> Classifier::GradientMagnitudes(const Vec3& index) const
+{
+  std::array<double, 4> squared{ 0, 0, 0, 0 };
+  double d[3][4];
+  this->CentralDifferences(index, d);
+  for (int a = 0; a < 3; ++a)
+  {
+    for (int c = 0; c < this->Count; ++c)
+    {
+      const double g = d[a][c] * this->GradientScale[a];
       squared[c] += g * g;
     }
   }
@@ -168,18 +181,10 @@ std::array<double, 4> Classifier::GradientMagnitudes(const Vec3& index) const
 
 Vec3 Classifier::ShadingGradient(const Vec3& index) const
 {
-  Vec3 g{ 0, 0, 0 };
+  double d[3][4];
+  this->CentralDifferences(index, d);
   const int c = this->ShadedComponent;
-  for (int a = 0; a < 3; ++a)
-  {
-    Vec3 e{ 0, 0, 0 };
-    e[a] = 1.0;
-    double plus[4], minus[4];
-    this->SampleClamped(index + e, plus);
-    this->SampleClamped(index - e, minus);
-    g[a] = 0.5 * (plus[c] - minus[c]) * this->InverseRange;
-  }
-  return g;
+  return Vec3{ d[0][c], d[1][c], d[2][c] } * (0.5 * this->InverseRange);
 }
 
 double Classifier::NormalisedGradient(const Vec3& g) const

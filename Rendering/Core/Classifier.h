@@ -81,6 +81,9 @@ private:
   bool Sample(const Vec3& index, double s[4], double& valid) const;
   // The components at `index` clamped into the lattice (the gradient's samples).
   void SampleClamped(const Vec3& index, double s[4]) const;
+  // VTK's central differences s(x + e_a) - s(x - e_a) of the components along each index axis
+  // (the samples clamped into the lattice): what both gradients are made of.
+  void CentralDifferences(const Vec3& index, double d[3][4]) const;
   Classified FromSamples(const Vec3& index, const double s[4], double valid) const;
 
   const VolumeScene& Scene;

@@ -275,10 +275,9 @@ void CastRay(const VolumeScene& scene,
   // dt)): albedo P_s sum_j E_j T_j e^(-l sigma~) (k_d c f_d + k_s f_s), each light's shadow
   // the light volume's tube transmittance times the transmittance over l = min(r, 1 / sigma_t) / 2
   // (half a mean free path) at the averaged extinction (SurfaceShading.h), all read at
-  // lightPoint(i) as the in-scattering reads them.
-  auto reflected = [&](int i, double sigma, const Vec3& c)
+  // lightPoint(i) as the in-scattering reads them; `surface` is surfaceAt(i, sigma).
+  auto reflected = [&](int i, double sigma, const Vec3& c, const SurfacePoint& surface)
   {
-    const SurfacePoint surface = surfaceAt(i, sigma);
     Vec3 out{ 0, 0, 0 };
     if (!(surface.Probability > 0.0))
     {
@@ -349,6 +348,8 @@ void CastRay(const VolumeScene& scene,
     {
       // Emission (eq. 8.7).
       L = L + c * (T * (1.0 - p.Albedo) * sigmaT * p.EmissionWeight * dt);
+      // The sample as a surface (what its diffuse field and direct light need).
+      const SurfacePoint surface = surfaceAt(i, sigmaT);
       // The extended model's diffuse light: albedo c / (4 pi) per unit optical depth times
       // what the P1 field scatters towards the camera, phi + g clamp(3 J.w, -phi, phi) with
       // 3 J.w = 3 D dphi/dt along the ray (the difference from the previous sample; 0 at the
@@ -389,7 +390,6 @@ void CastRay(const VolumeScene& scene,
         Vec3 field = c;
         if (surfaces)
         {
-          const SurfacePoint surface = surfaceAt(i, sigmaT);
           Vec3 facing;
           field = DiffuseFieldColor(surface.Probability,
             p.Surface,
@@ -401,7 +401,7 @@ void CastRay(const VolumeScene& scene,
       // Surfaces: the direct light the sample reflects.
       if (surfaces && sigmaT > 0.0)
       {
-        L = L + reflected(i, sigmaT, c) * (T * (1.0 - extinction));
+        L = L + reflected(i, sigmaT, c, surface) * (T * (1.0 - extinction));
       }
       // Ambient in-scattering from the ball around x' (eqs. 8.8-8.9), weighted by the
       // transmittance r before x'. x' is a sample, lag + 1 steps on, and the transmittance r

@@ -85,21 +85,26 @@ vec4 Components(vec4 raw, float valid)
 #endif
 }
 
+// VTK's central difference s(x + e_a) - s(x - e_a) of the components along index axis a at
+// `coordinate` (one voxel on either side; the texture clamps at the faces): what gradient
+// opacity and the surfaces' normal (avs_surface.glsl) are made of.
+vec4 CentralDifference(vec3 coordinate, int a)
+{
+  vec3 e = vec3(0.0);
+  e[a] = u_voxelStep[a];
+  vec4 p = textureLod(AVS_VOLUME_TEXTURE, coordinate + e, 0.0);
+  vec4 m = textureLod(AVS_VOLUME_TEXTURE, coordinate - e, 0.0);
+  return Components(p, Validity(p, coordinate + e)) - Components(m, Validity(m, coordinate - e));
+}
+
 #if AVS_GRADIENT != 0
-// The components' gradient magnitudes at `coordinate` (VTK's central differences, one voxel on
-// either side; the texture clamps at the faces).
+// The components' gradient magnitudes at `coordinate`.
 vec4 GradientMagnitudes(vec3 coordinate)
 {
   vec4 squared = vec4(0.0);
   for (int a = 0; a < 3; ++a)
   {
-    vec3 e = vec3(0.0);
-    e[a] = u_voxelStep[a];
-    vec4 p = textureLod(AVS_VOLUME_TEXTURE, coordinate + e, 0.0);
-    vec4 m = textureLod(AVS_VOLUME_TEXTURE, coordinate - e, 0.0);
-    vec4 g = (Components(p, Validity(p, coordinate + e)) -
-               Components(m, Validity(m, coordinate - e))) *
-      u_gradientScale[a];
+    vec4 g = CentralDifference(coordinate, a) * u_gradientScale[a];
     squared += g * g;
   }
   return sqrt(squared);

@@ -243,20 +243,26 @@ float Transmittance(vec3 origin, vec3 direction, float tMaximum)
 }
 
 #ifdef AVS_POSITIONAL_LIGHTS
-// Next-event estimation towards light j (a constant where AVS_FOR_EACH_LIGHT expands it): the
-// light light j sends from x towards -w (the path's direction reversed), per unit of the
-// scattering albedo.
-vec3 NextEvent(int j, vec3 x, vec3 w)
+// The light j (a constant where AVS_FOR_EACH_LIGHT expands it) sends to x, ratio-tracked through
+// the medium, and its propagation direction there.
+vec3 ArrivingLight(int j, vec3 x, out vec3 propagation)
 {
-  vec3 propagation, irradiance;
+  vec3 irradiance;
   LightAt(j, x, propagation, irradiance);
   if (!(max(max(irradiance.r, irradiance.g), irradiance.b) > 0.0))
     return vec3(0.0);
   float distance = LightIsPositional(j) ? length(u_lightPosition[j] - x) : FAR;
   float T = Transmittance(x, -propagation, distance);
-  if (!(T > 0.0))
-    return vec3(0.0);
-  return irradiance * (HenyeyGreenstein(dot(propagation, -w), u_anisotropy) * T);
+  return T > 0.0 ? irradiance * T : vec3(0.0);
+}
+
+// Next-event estimation towards light j: the light light j sends from x towards -w (the path's
+// direction reversed), per unit of the scattering albedo.
+vec3 NextEvent(int j, vec3 x, vec3 w)
+{
+  vec3 propagation;
+  vec3 arriving = ArrivingLight(j, x, propagation);
+  return arriving * HenyeyGreenstein(dot(propagation, -w), u_anisotropy);
 }
 #define AVS_NEXT_EVENT(j) light += NextEvent(j, x, w);
 #ifdef AVS_SURFACE
@@ -264,17 +270,11 @@ vec3 NextEvent(int j, vec3 x, vec3 w)
 // phase-function event plus the BRDF, with the albedo (chromatic for all but the specular part).
 vec3 SurfaceNextEvent(int j, vec3 x, vec3 w, vec3 albedo)
 {
-  vec3 propagation, irradiance;
-  LightAt(j, x, propagation, irradiance);
-  if (!(max(max(irradiance.r, irradiance.g), irradiance.b) > 0.0))
-    return vec3(0.0);
-  float distance = LightIsPositional(j) ? length(u_lightPosition[j] - x) : FAR;
-  float T = Transmittance(x, -propagation, distance);
-  if (!(T > 0.0))
-    return vec3(0.0);
+  vec3 propagation;
+  vec3 arriving = ArrivingLight(j, x, propagation);
   float phase = HenyeyGreenstein(dot(propagation, -w), u_anisotropy);
   vec2 r = SurfaceReflectance(g_surfaceNormal, -propagation, -w);
-  return irradiance * T * (albedo * (u_surfaceCoefficients.x * phase + r.x) + u_albedo * r.y);
+  return arriving * (albedo * (u_surfaceCoefficients.x * phase + r.x) + u_albedo * r.y);
 }
 #define AVS_SURFACE_NEXT_EVENT(j) light += SurfaceNextEvent(j, x, w, albedo);
 #endif
@@ -364,7 +364,9 @@ void main()
       }
     }
     else
+#endif
     {
+      // A phase-function event.
 #ifdef AVS_POSITIONAL_LIGHTS
       AVS_FOR_EACH_LIGHT(AVS_NEXT_EVENT)
 #endif
@@ -372,14 +374,6 @@ void main()
       beta *= albedo;
       w = SampleHenyeyGreenstein(w, u_anisotropy);
     }
-#else
-#ifdef AVS_POSITIONAL_LIGHTS
-    AVS_FOR_EACH_LIGHT(AVS_NEXT_EVENT)
-#endif
-    L += beta * albedo * light;
-    beta *= albedo;
-    w = SampleHenyeyGreenstein(w, u_anisotropy);
-#endif
     limit = FAR;
     if (bounce >= ROULETTE_DEPTH)
     {

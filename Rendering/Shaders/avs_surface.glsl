@@ -35,14 +35,7 @@ void SurfaceGradientAt(vec3 coordinate, vec3 toViewer)
   vec3 g = vec3(0.0);
   for (int a = 0; a < 3; ++a)
   {
-    vec3 e = vec3(0.0);
-    e[a] = u_voxelStep[a];
-    vec4 p = textureLod(AVS_VOLUME_TEXTURE, coordinate + e, 0.0);
-    vec4 m = textureLod(AVS_VOLUME_TEXTURE, coordinate - e, 0.0);
-    g[a] = 0.5 *
-      (Components(p, Validity(p, coordinate + e))[AVS_SURFACE_COMPONENT] -
-        Components(m, Validity(m, coordinate - e))[AVS_SURFACE_COMPONENT]) *
-      u_surfaceInverseRange;
+    g[a] = 0.5 * CentralDifference(coordinate, a)[AVS_SURFACE_COMPONENT] * u_surfaceInverseRange;
   }
   vec3 world = u_gradientToWorld * g;
   float len = length(world);

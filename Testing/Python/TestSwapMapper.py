@@ -158,10 +158,11 @@ def grab(window):
     return vtk_to_numpy(out.GetPointData().GetScalars()).reshape(h, w, 3).astype(float)
 
 
-def user_script(image, mapper, lighting, feature=False):
+def user_script(image, mapper, lighting, feature=False, inspect=None):
     """What a VTK user writes: a shaded volume property, a camera, the renderer's lights (with
     `feature`, the transfer function picks out a feature: FEATURE_OPACITY). Returns the picture
-    (rows x columns x RGB, 0-255) and the number of errors."""
+    (rows x columns x RGB, 0-255) and the number of errors. `inspect`, when given, is called
+    with the renderer after the render, while the window is still open."""
     lo, hi = image.GetScalarRange()
     color = vtkColorTransferFunction()
     color.AddRGBPoint(lo, 0.9, 0.6, 0.4)
@@ -208,6 +209,8 @@ def user_script(image, mapper, lighting, feature=False):
     mapper.AddObserver(vtkCommand.ErrorEvent, lambda *args: errors.append(args))
     window.Render()
     picture = grab(window)
+    if inspect:
+        inspect(renderer)
     window.Finalize()
     return picture, len(errors)
 
