@@ -243,6 +243,16 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     }
     in.UploadedTransferVersion = in.TransferVersion;
   }
+  // Surfaces inside the medium (ShadeOn): the gradient, made again when the data or the
+  // shading component's range changed.
+  if (!in.RayCaster.UploadSurfaces(in.Scene,
+        this->GetEffect() == 2 && in.Parameters.Surface.Active(),
+        in.ScalarSource(),
+        error))
+  {
+    vtkErrorMacro("Cannot render: " << error);
+    return false;
+  }
 
   // The subclass's precomputed volumes (vtkAVSOcclusionVolume, vtkAVSScatteringVolumes).
   vtkAVSPrecomputeInputs inputs;

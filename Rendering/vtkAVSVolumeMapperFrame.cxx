@@ -5,7 +5,6 @@
 
 #include "vtkAVSVolumeMapperInternals.h"
 
-#include "Classifier.h"
 #include "DisplayTransform.h"
 #include "ImageSampleDistance.h"
 #include "vtkAVSRenderPasses.h"
@@ -129,8 +128,6 @@ void vtkAVSVolumeMapper::AssembleFrame(vtkRenderer* renderer,
   frame.WholeDimensions = in.Whole.Dimensions;
   frame.PieceOffset = in.PieceOffset;
   frame.Lights = in.WorldLights;
-  frame.ShadingInverseRange =
-    in.Parameters.Surface.Active() ? avs::Classifier(in.Scene).ShadingInverseRange() : 1.0;
   frame.Jitter = this->UseJittering != 0;
   frame.Prop = volume;
   frame.Mapper = this;

@@ -2,6 +2,7 @@
 
 #include "Extinction.h"
 #include "ReferenceRenderer.h"
+#include "SurfaceGrid.h"
 #include "SurfaceShading.h"
 
 #include <algorithm>
@@ -200,13 +201,28 @@ SurfacePoint Classifier::SurfaceAt(const Vec3& index, double sigmaT, double blen
   {
     return out;
   }
-  const Vec3 g = this->ShadingGradient(index);
+  Vec3 local;
+  double edge = 0.0;
+  if (this->Surfaces)
+  {
+    const bool nearest = this->Medium.Sampling == Interpolation::Nearest;
+    this->Surfaces->Sample(index, nearest, local, edge);
+  }
+  else
+  {
+    const Vec3 g = this->ShadingGradient(index);
+    const Vec3& h = this->Scene.Scalars.Geometry.Spacing;
+    local = { g.x / h.x, g.y / h.y, g.z / h.z };
+    edge = SurfaceEdge(this->NormalisedGradient(g));
+  }
+  // Back to index units (times the spacing), then to world by the transpose of d index / d world.
+  const Vec3 g = Mul(local, this->Scene.Scalars.Geometry.Spacing);
   const Vec3 world{ Dot(this->ToIndex[0], g), Dot(this->ToIndex[1], g), Dot(this->ToIndex[2], g) };
   const double length = Length(world);
   if (length > 0.0)
   {
     const double alpha = 1.0 - std::exp(-sigmaT * this->UnitDistance[0]);
-    out.Probability = SurfaceProbability(this->NormalisedGradient(g), alpha, blending);
+    out.Probability = SurfaceProbabilityOfEdge(edge, alpha, blending);
     out.Normal = world * (-1.0 / length);
   }
   return out;

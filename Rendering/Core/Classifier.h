@@ -18,6 +18,7 @@ namespace avs
 {
 
 struct VolumeScene;
+struct SurfaceGrid;
 
 struct Classified
 {
@@ -69,11 +70,18 @@ public:
   /// gamma of SurfaceShading.h for a ShadingGradient: the mean spacing times |grad s| / range.
   double NormalisedGradient(const Vec3& shadingGradient) const;
   /// The sample at a continuous index with extinction `sigmaT` as a surface, for the blending
-  /// B (SurfaceShading.h): P_s from the normalised gradient and alpha = 1 - e^(-sigma_t u), the
-  /// normal in world space (the gradient taken there by the transpose of d index / d world).
+  /// B (SurfaceShading.h): P_s from the edge share and alpha = 1 - e^(-sigma_t u), the normal
+  /// in world space (the gradient taken there by the transpose of d index / d world); both from
+  /// the surface grid where one is set (SetSurfaceGrid).
   SurfacePoint SurfaceAt(const Vec3& index, double sigmaT, double blending) const;
   /// 1 / the shading component's range (what the GPU uploads).
   double ShadingInverseRange() const { return this->InverseRange; }
+  /// The component ShadingGradient differentiates (ShadingComponent, within the components).
+  int ShadingComponentIndex() const { return this->ShadedComponent; }
+  /// The precomputed gradient SurfaceAt reads (not owned; it must outlive the classifier): a
+  /// MakeSurfaceGrid of the same scene, as the GPU reads it. Without one (null, the default)
+  /// SurfaceAt takes the central differences where it is asked, unquantised.
+  void SetSurfaceGrid(const SurfaceGrid* grid) { this->Surfaces = grid; }
 
 private:
   // The components at `index` (normalised by the validity) and the validity there; false when
@@ -99,6 +107,7 @@ private:
   int ShadedComponent = 0;
   Vec3 ToIndex[3]; // rows of d index / d world
   double InverseRange = 1.0;
+  const SurfaceGrid* Surfaces = nullptr;
 };
 
 /// Everything sigma_t depends on apart from the grids (opacity tables, ranges, unit distances,

@@ -4,6 +4,7 @@
 #include "Parallel.h"
 #include "PhaseFunction.h"
 #include "Random.h"
+#include "SurfaceGrid.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,11 +14,14 @@
 namespace avs
 {
 
-VolumeTracker::VolumeTracker(const VolumeScene& scene, const MajorantGrid& majorants)
+VolumeTracker::VolumeTracker(const VolumeScene& scene,
+  const MajorantGrid& majorants,
+  const SurfaceGrid* surfaces)
   : Scene(scene)
   , Majorants(majorants)
   , Classify(scene)
 {
+  this->Classify.SetSurfaceGrid(surfaces);
 }
 
 double VolumeTracker::Extinction(const Vec3& world, Vec3* color) const
@@ -329,7 +333,9 @@ Image RenderPathTraced(const VolumeScene& scene,
   }
   const MajorantGrid majorants(
     Classifier(scene), scene.Scalars.Geometry, settings.MajorantCellSize, &scene.Clip);
-  const VolumeTracker tracker(scene, majorants);
+  // Surfaces read the precomputed gradient, as the renderers do (SurfaceGrid.h).
+  const SurfaceGrid surfaces = p.Surface.Active() ? MakeSurfaceGrid(scene) : SurfaceGrid();
+  const VolumeTracker tracker(scene, majorants, surfaces.Empty() ? nullptr : &surfaces);
   const PathContext context{ scene, p, settings, tracker };
   std::vector<double> sum(4 * static_cast<std::size_t>(image.Width) * image.Height, 0.0);
   std::vector<double> squares(secondMoment ? sum.size() : 0, 0.0);

@@ -60,7 +60,11 @@ Image RenderPathTraced(const VolumeScene& scene,
 class VolumeTracker
 {
 public:
-  VolumeTracker(const VolumeScene& scene, const MajorantGrid& majorants);
+  /// `surfaces`: the precomputed gradient its surfaces read (Classifier::SetSurfaceGrid;
+  /// null: taken where asked), which must outlive it.
+  VolumeTracker(const VolumeScene& scene,
+    const MajorantGrid& majorants,
+    const SurfaceGrid* surfaces = nullptr);
 
   /// Delta tracking from world point `origin` along unit `direction` up to world distance
   /// `maximum` (and the volume box): returns the distance of a real collision, or a negative

@@ -8,6 +8,7 @@
 #include "LightVolume.h"
 #include "Parallel.h"
 #include "PhaseFunction.h"
+#include "SurfaceGrid.h"
 #include "SurfaceShading.h"
 
 #include <algorithm>
@@ -273,10 +274,10 @@ void CastRay(const VolumeScene& scene,
   };
   // The light a surface sample at x (sigma_t, colour c) reflects per unit of T (1 - e^(-sigma
   // dt)): albedo P_s sum_j E_j T_j e^(-l sigma~) (k_d c f_d + k_s f_s), each light's shadow
-  // the light volume's tube transmittance times the transmittance over l = min(r, 1 / sigma_t) / 2
-  // (half a mean free path) at the averaged extinction (SurfaceShading.h), all read at
-  // lightPoint(i) as the in-scattering reads them; `surface` is surfaceAt(i, sigma).
-  auto reflected = [&](int i, double sigma, const Vec3& c, const SurfacePoint& surface)
+  // the light volume's tube transmittance times the transmittance over l = min(r, 1 / sigma~) / 2
+  // (at most half a mean free path) at the averaged extinction sigma~ (SurfaceShading.h), all
+  // read at lightPoint(i) as the in-scattering reads them; `surface` is surfaceAt(i, sigma).
+  auto reflected = [&](int i, const Vec3& c, const SurfacePoint& surface)
   {
     Vec3 out{ 0, 0, 0 };
     if (!(surface.Probability > 0.0))
@@ -285,7 +286,7 @@ void CastRay(const VolumeScene& scene,
     }
     const Vec3 xl = lightPoint(i);
     const double ball =
-      std::exp(-0.5 * std::min(p.AmbientRadius, 1.0 / sigma) * SampleLocalClamped(v.Averaged, xl));
+      std::exp(-0.5 * std::min(p.AmbientRadius * SampleLocalClamped(v.Averaged, xl), 1.0));
     const Vec3 world = geometry.LocalToWorld(xl);
     for (std::size_t j = 0; j < scene.Lights.size(); ++j)
     {
@@ -401,7 +402,7 @@ void CastRay(const VolumeScene& scene,
       // Surfaces: the direct light the sample reflects.
       if (surfaces && sigmaT > 0.0)
       {
-        L = L + reflected(i, sigmaT, c, surface) * (T * (1.0 - extinction));
+        L = L + reflected(i, c, surface) * (T * (1.0 - extinction));
       }
       // Ambient in-scattering from the ball around x' (eqs. 8.8-8.9), weighted by the
       // transmittance r before x'. x' is a sample, lag + 1 steps on, and the transmittance r
@@ -439,7 +440,14 @@ Image RenderReference(const VolumeScene& scene,
   image.Height = std::max(0, height);
   image.Pixels.assign(4 * static_cast<std::size_t>(image.Width) * image.Height, 0.0f);
   std::atomic<int> rows{ 0 };
-  const Classifier classifier(scene);
+  Classifier classifier(scene);
+  // Surfaces read the precomputed gradient, as the GPU does (SurfaceGrid.h).
+  SurfaceGrid surfaces;
+  if (mode == RenderMode::AmbientScattering && p.Surface.Active())
+  {
+    surfaces = MakeSurfaceGrid(scene);
+    classifier.SetSurfaceGrid(&surfaces);
+  }
   const std::thread::id caller = std::this_thread::get_id();
   ParallelFor(image.Height,
     [&](std::int64_t b, std::int64_t e)

@@ -27,14 +27,29 @@ SurfaceShading SurfaceShading::Resolved() const
   return s;
 }
 
+double SurfaceEdge(double gamma)
+{
+  return 1.0 - std::exp(-std::max(0.0, gamma) / SurfaceGradientReference);
+}
+
+double SurfaceProbabilityOfEdge(double edge, double alpha, double blending)
+{
+  const double e = std::clamp(edge, 0.0, 1.0);
+  const double b = std::clamp(blending, 0.0, 2.0);
+  if (b == 0.0)
+  {
+    return e;
+  }
+  // gamma / gamma_0, bounded where e rounds to 1 (a quantised edge share).
+  const double g = -std::log(std::max(1.0 - e, 1e-6));
+  const double decay = std::exp(-b * g * std::clamp(alpha, 0.0, 1.0));
+  const double volumetric = b < 1.0 ? b * decay : (2.0 - b) * decay + (b - 1.0);
+  return e * (1.0 - volumetric);
+}
+
 double SurfaceProbability(double gamma, double alpha, double blending)
 {
-  const double g = std::max(0.0, gamma) / SurfaceGradientReference;
-  const double a = std::clamp(alpha, 0.0, 1.0);
-  const double b = std::clamp(blending, 0.0, 2.0);
-  const double decay = std::exp(-b * g * a);
-  const double volumetric = b < 1.0 ? b * decay : (2.0 - b) * decay + (b - 1.0);
-  return (1.0 - std::exp(-g)) * (1.0 - volumetric);
+  return SurfaceProbabilityOfEdge(SurfaceEdge(gamma), alpha, blending);
 }
 
 SurfaceReflectance Reflect(const SurfaceShading& s,

@@ -24,7 +24,8 @@
 // viewer; one-sided: nothing where the viewer or the light is behind n). k_a + k_d + k_s are
 // scaled down to 1 where they sum to more, so that no event returns more than it receives. In
 // ambient scattering the direct light is the light volume's times e^(-l sigma~), l = min(r,
-// 1 / sigma_t) / 2 (ARCHITECTURE.md, "Surfaces inside the medium").
+// 1 / sigma~) / 2 (ARCHITECTURE.md, "Surfaces inside the medium"). The renderers read gamma's
+// direction and the first factor of P_s from a precomputed grid (SurfaceGrid.h).
 #ifndef avs_SurfaceShading_h
 #define avs_SurfaceShading_h
 
@@ -57,6 +58,10 @@ struct SurfaceShading
 
 /// The share of the events that are surface events, P_s(gamma, alpha, B) above.
 double SurfaceProbability(double gamma, double alpha, double blending);
+/// Its first factor, the edge share 1 - exp(-gamma / gamma_0) (what SurfaceGrid.h stores).
+double SurfaceEdge(double gamma);
+/// P_s from the edge share e (gamma / gamma_0 = -ln(1 - e)): e (1 - w); e itself at B = 0.
+double SurfaceProbabilityOfEdge(double edge, double alpha, double blending);
 
 /// What a sample returns of the volumetric (phase-function) light: 1 - P_s (1 - k_a).
 inline double VolumetricShare(double surfaceProbability, double ambient)

@@ -107,20 +107,19 @@ void vtkAVSFrameUniforms::SetParameters(vtkShaderProgram* program,
         static_cast<float>(s.SpecularPower) };
       program->SetUniform4f("u_surfaceCoefficients", coefficients);
       program->SetUniformi("u_surfaceTwoSided", s.TwoSided ? 1 : 0);
-      program->SetUniformf("u_surfaceInverseRange", static_cast<float>(frame.ShadingInverseRange));
-      program->SetUniformf(
-        "u_surfaceInverseReference", static_cast<float>(1.0 / avs::SurfaceGradientReference));
-      // The transpose of d index / d world, column-major: the world -> index matrix's upper
-      // 3 x 3 in VTK's row-major order.
+      // The precomputed gradient's local direction n in world space: the transpose of
+      // d index / d world times the spacing (n is per world unit of the local frame),
+      // column-major: row r of the world -> index matrix's upper 3 x 3 times h_r.
       float toWorld[9];
       for (int r = 0; r < 3; ++r)
       {
         for (int c = 0; c < 3; ++c)
         {
-          toWorld[3 * r + c] = static_cast<float>(frame.WorldToIndex->GetElement(r, c));
+          toWorld[3 * r + c] =
+            static_cast<float>(frame.WorldToIndex->GetElement(r, c) * frame.Spacing[r]);
         }
       }
-      program->SetUniformMatrix3x3("u_gradientToWorld", toWorld);
+      program->SetUniformMatrix3x3("u_surfaceToWorld", toWorld);
     }
   }
 }

@@ -136,6 +136,15 @@ bool vtkAVSRayCaster::UploadClassification(const avs::VolumeScene& scene, std::s
   return this->Textures.UploadClassification(scene, error);
 }
 
+bool vtkAVSRayCaster::UploadSurfaces(const avs::VolumeScene& scene,
+  bool active,
+  const vtkAVSVolumeTextures::ScalarSource& source,
+  std::string& error)
+{
+  this->Textures.SetWindow(this->Window);
+  return this->Textures.UploadSurfaces(scene, active, source, error);
+}
+
 bool vtkAVSRayCaster::UploadAveraged(const avs::Grid& averaged, std::string& error)
 {
   return this->Textures.UploadAveraged(averaged, error);
@@ -376,6 +385,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     program->SetUniformi("u_scalars", tx.Scalars->GetTextureUnit());
   }
   tx.Classification.Bind(static_cast<unsigned int>(program->GetHandle()));
+  tx.Surfaces.Bind(static_cast<unsigned int>(program->GetHandle()), layout.Nearest);
   if (skip)
   {
     tx.Occupancy->Activate();
@@ -408,6 +418,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
       program->SetUniformi("u_scalars", texture->GetTextureUnit());
       vtkAVSFrameUniforms::SetBrick(program, tx.Bricks.GetBricks()[static_cast<std::size_t>(b)]);
       tx.Classification.BindBrick(static_cast<unsigned int>(program->GetHandle()), b);
+      tx.Surfaces.BindBrick(static_cast<unsigned int>(program->GetHandle()), b, layout.Nearest);
       this->Quad->Render();
       texture->Deactivate();
     }
@@ -576,6 +587,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   }
 
   tx.Classification.Unbind();
+  tx.Surfaces.Unbind();
   this->Diffuse.Unbind(); // the extended model
   for (vtkTextureObject* t : { this->Depth.GetTexture(),
          tx.Scalars.Get(),

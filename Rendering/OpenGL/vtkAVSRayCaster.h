@@ -101,6 +101,11 @@ public:
   double ReportedGPUMemoryBytes();
   /// The classification's tables, mask and uniforms (vtkAVSClassification), after the scalars.
   bool UploadClassification(const avs::VolumeScene& scene, std::string& error);
+  /// Surfaces inside the medium: the precomputed gradient (vtkAVSVolumeTextures::UploadSurfaces).
+  bool UploadSurfaces(const avs::VolumeScene& scene,
+    bool active,
+    const vtkAVSVolumeTextures::ScalarSource& source,
+    std::string& error);
   /// The CPU's ambient-scattering volumes: the averaged extinction on the light grid (which
   /// the ray caster samples with the light volumes' coordinate) ...
   bool UploadAveraged(const avs::Grid& averaged, std::string& error);
@@ -183,9 +188,6 @@ public:
     std::array<int, 3> PieceOffset{ 0, 0, 0 };
     std::array<int, 3> OcclusionDimensions{ 1, 1, 1 };
     std::vector<avs::Light> Lights; ///< world space
-    /// Surfaces inside the medium (Parameters.Surface active): 1 / the range of the component
-    /// whose gradient is the normal (avs::Classifier::ShadingInverseRange).
-    double ShadingInverseRange = 1.0;
     bool Jitter = true;
     /// The volume and its mapper, for the render passes attached to the volume (SSAO's draw
     /// buffers); with PeelingFront the volume goes into vtkDualDepthPeelingPass's front target

@@ -69,6 +69,7 @@ bool vtkAVSRayCaster::Refine(vtkRenderer* renderer,
         pt->SetUniformi("u_scalars", tx.Scalars->GetTextureUnit());
         pt->SetUniformf("u_majorantCellSize", static_cast<float>(tx.ValueRanges.CellSize()));
         tx.Classification.Bind(static_cast<unsigned int>(pt->GetHandle()));
+        tx.Surfaces.Bind(static_cast<unsigned int>(pt->GetHandle()), layout.Nearest);
       },
       error);
     if (!added)

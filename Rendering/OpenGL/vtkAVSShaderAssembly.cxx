@@ -121,13 +121,15 @@ std::string vtkAVSShaderAssembly::RayCastDefines(avs::RenderMode mode,
   {
     defines += "#define AVS_LIGHTS_PER_PAIR\n";
   }
-  // Surfaces inside the medium (avs_surface.glsl): the normal is the gradient of the component
-  // that gives the opacity (avs::ShadingComponent).
+  // Surfaces inside the medium (avs_surface.glsl), their precomputed gradient in u_surfaces;
+  // with a blending above 0 the share of surface events depends on each sample's opacity.
   if (p.Surface.Active())
   {
-    const int component = layout.Mode == 1 ? 1 : (layout.Mode == 2 ? 3 : 0);
-    defines +=
-      "#define AVS_SURFACE\n#define AVS_SURFACE_COMPONENT " + std::to_string(component) + "\n";
+    defines += "#define AVS_SURFACE\n";
+    if (p.Surface.Blending > 0.0)
+    {
+      defines += "#define AVS_SURFACE_BLENDED\n";
+    }
   }
   // Directional lights read A from a per-ray column of the table (see avs_as_effect.glsl) when
   // the table's tau axis is short enough to keep one column per light.

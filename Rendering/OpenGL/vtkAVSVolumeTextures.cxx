@@ -1,5 +1,8 @@
 #include "vtkAVSVolumeTextures.h"
 
+#include "Classifier.h"
+#include "SurfaceGrid.h"
+
 #include "vtkAVSBricks.h"
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSTextureMemory.h"
@@ -21,6 +24,8 @@ void vtkAVSVolumeTextures::SetWindow(vtkOpenGLRenderWindow* window)
 void vtkAVSVolumeTextures::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Classification.ReleaseGraphicsResources(window);
+  this->Surfaces.ReleaseGraphicsResources(window);
+  this->SurfacesKey.clear();
   for (vtkTextureObject* t : { this->Scalars.Get(),
          this->AveragedExtinction.Get(),
          this->Occlusion.Get(),
@@ -504,6 +509,68 @@ bool vtkAVSVolumeTextures::UploadClassification(const avs::VolumeScene& scene, s
   return this->UploadOccupancy(scene, error);
 }
 
+bool vtkAVSVolumeTextures::UploadSurfaces(const avs::VolumeScene& scene,
+  bool active,
+  const ScalarSource& source,
+  std::string& error)
+{
+  if (!active)
+  {
+    this->Surfaces.ReleaseGraphicsResources(this->Window);
+    this->SurfacesKey.clear();
+    return true;
+  }
+  const avs::Classifier classifier(scene);
+  const int c = classifier.ShadingComponentIndex();
+  std::vector<double> key{ static_cast<double>(this->ValueRangesVersion),
+    static_cast<double>(c),
+    classifier.ShadingInverseRange(),
+    static_cast<double>(this->Bricks.GetNumberOfBricks()) };
+  if (this->Surfaces.IsUploaded() && key == this->SurfacesKey)
+  {
+    return true; // made from the same scalars and range
+  }
+  avs::SurfaceGrid grid;
+  const avs::GridGeometry& g = scene.Scalars.Geometry;
+  if (!scene.Scalars.Values.empty() || !source.Read)
+  {
+    grid = avs::MakeSurfaceGrid(scene);
+  }
+  else
+  {
+    // Slice by slice from the array (the validity, where there is one, is on the host).
+    const std::size_t slice = static_cast<std::size_t>(g.Dimensions[0]) * g.Dimensions[1];
+    const std::vector<float>& validity = scene.Medium.Validity.Values;
+    const avs::SurfaceSliceReader read = [&](int k, float* out)
+    {
+      const std::size_t first = slice * static_cast<std::size_t>(k);
+      source.Read(c, first, first + slice, out);
+      for (std::size_t v = 0; v < slice; ++v)
+      {
+        const float valid = validity.empty() ? 1.0f : validity[first + v];
+        out[v] = valid > 0.0f && out[v] == out[v] ? out[v] / valid : 0.0f;
+      }
+    };
+    grid = avs::MakeSurfaceGrid(g.Dimensions, g.Spacing, classifier.ShadingInverseRange(), read);
+  }
+  std::vector<vtkTextureObject*> held = this->BudgetTextures();
+  const std::vector<vtkTextureObject*> own = this->Surfaces.VolumeTextures();
+  held.erase(
+    std::remove_if(held.begin(),
+      held.end(),
+      [&own](vtkTextureObject* t) { return std::find(own.begin(), own.end(), t) != own.end(); }),
+    held.end());
+  if (!this->Surfaces.Upload(
+        this->Window, grid, this->Bricks, held, this->IsSoftwareRenderer(), error))
+  {
+    this->SurfacesKey.clear();
+    return false;
+  }
+  this->SurfacesKey = std::move(key);
+  this->NotePeak();
+  return true;
+}
+
 bool vtkAVSVolumeTextures::UploadOccupancy(const avs::VolumeScene& scene, std::string& error)
 {
   if (this->ValueRanges.Empty() ||
@@ -577,6 +644,10 @@ std::vector<vtkTextureObject*> vtkAVSVolumeTextures::VolumeTextures() const
     this->Scratch[0],
     this->Scratch[1] };
   for (vtkTextureObject* t : this->BrickTextures)
+  {
+    held.push_back(t);
+  }
+  for (vtkTextureObject* t : this->Surfaces.VolumeTextures())
   {
     held.push_back(t);
   }

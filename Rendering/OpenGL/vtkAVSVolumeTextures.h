@@ -20,6 +20,7 @@
 #include "ScatteringTable.h"
 #include "vtkAVSBricks.h"
 #include "vtkAVSClassification.h"
+#include "vtkAVSSurfaceTexture.h"
 #include "vtkAVSTextureUpload.h"
 
 #include "vtkOpenGLRenderWindow.h" // for vtkWeakPointer<vtkOpenGLRenderWindow>
@@ -112,6 +113,14 @@ public:
   /// value ranges UploadScalars took, as an 8-bit texture (Occupancy); done by UploadScalars
   /// and UploadClassification, each time the ranges or the opacity changed.
   bool UploadOccupancy(const avs::VolumeScene& scene, std::string& error);
+  /// Surfaces inside the medium (ShadeOn): the gradient of the scene's shading component
+  /// (avs::SurfaceGrid), made from the scene's grids or, where they hold no values, from
+  /// `source`, and uploaded whole or per brick (Surfaces) when the scalars, the component or its
+  /// range changed since the last; released when `active` is false.
+  bool UploadSurfaces(const avs::VolumeScene& scene,
+    bool active,
+    const ScalarSource& source,
+    std::string& error);
   bool UploadAveraged(const avs::Grid& averaged, std::string& error);
   bool UploadLightVolumes(const std::vector<avs::Grid>& lights, std::string& error);
   bool UploadOcclusion(const avs::Grid& occlusion, std::string& error);
@@ -165,6 +174,9 @@ public:
   vtkAVSBricks Bricks;
   std::vector<vtkSmartPointer<vtkTextureObject>> BrickTextures;
   vtkAVSClassification Classification;
+  /// The surfaces' gradient (UploadSurfaces) and what it was made from.
+  vtkAVSSurfaceTexture Surfaces;
+  std::vector<double> SurfacesKey;
   /// The layout the scalars were uploaded with (vtkAVSClassification::Layout), and their texel
   /// format (its Scale and Shift map the texels back to data values in the shaders).
   vtkAVSClassification::Layout ScalarLayout;

@@ -165,36 +165,66 @@ float Tube(int j, vec4 tubes0, vec4 tubes1)
 // a surface sample reflects.
 //AVS::Surface::Dec
 #ifdef AVS_SURFACE
+#if defined(AVS_LIGHTS_PER_PAIR) && !defined(AVS_LOOKAHEAD_EXPLICIT) && \
+  !defined(AVS_SURFACE_BLENDED)
+// Surfaces at blending 0 with the lights read per pair of samples (AVS_SAMPLE_PAIRS): P_s
+// depends on the gradient alone, read once per pair, so what the pair's samples return of each
+// light is weighed by it once, in the pair's snippet.
+#define AVS_SURFACE_PER_PAIR
+#endif
 // The light values LightSum read last (its tube transmittances and averaged sigma_t).
 vec4 g_surfaceTubes0 = vec4(1.0);
 vec4 g_surfaceTubes1 = vec4(1.0);
 float g_surfaceAveraged = 0.0;
-// The lights' direct light a surface reflects at the last SurfacePoint: sum_j E_j T_j f_d cos
-// (to be multiplied by the colour) and sum_j E_j T_j f_s cos.
+// The lights' direct light a surface reflects at the last SurfaceLights, per unit of T (1 -
+// e^(-sigma dt)) and of P_s: albedo e^(-l sigma~) sum_j E_j T_j f_d cos (to be multiplied by
+// the colour) and albedo e^(-l sigma~) sum_j E_j T_j f_s cos, l sigma~ = min(r sigma~, 1) / 2
+// (SurfaceShading.h); with AVS_SURFACE_PER_PAIR times the pair's P_s too.
 vec3 g_surfaceDiffuse = vec3(0.0);
 vec3 g_surfaceSpecular = vec3(0.0);
 
 // Light j's (a constant) share of them, the light at `world` with the tube transmittance
-// LightSum read there.
-void SurfaceLight(int j, vec3 world, vec3 direction, inout vec3 diffuse, inout vec3 specular)
+// LightSum read there: E_j T_j (n.l) and E_j T_j (n.l) max(0, r.v)^p, with n the normal turned
+// to the viewer `v` and r.v = 2 (n.l)(n.v) - l.v (SurfaceReflectance's terms, the BRDF's
+// constants applied once for all lights in SurfaceLights).
+void SurfaceLight(int j,
+  vec3 world,
+  vec3 n,
+  float nv,
+  vec3 v,
+  inout vec3 diffuse,
+  inout vec3 specular)
 {
   vec3 propagation, irradiance;
   LightAt(j, world, propagation, irradiance);
-  vec2 r = SurfaceReflectance(g_surfaceNormal, -propagation, -direction);
-  vec3 arriving = irradiance * Tube(j, g_surfaceTubes0, g_surfaceTubes1);
-  diffuse += arriving * r.x;
-  specular += arriving * r.y;
+  float nl = max(-dot(n, propagation), 0.0);
+  float rv = max(2.0 * nl * nv + dot(propagation, v), 0.0);
+  vec3 arriving = irradiance * (Tube(j, g_surfaceTubes0, g_surfaceTubes1) * nl);
+  diffuse += arriving;
+  specular += arriving * exp2(u_surfaceCoefficients.w * log2(max(rv, 1e-30)));
 }
 
 // The direct light a surface reflects at a sample's light point `world` (where LightSum read
-// the light values last), with the last SurfaceGradientAt's normal.
+// the light values last), with the last SurfaceGradientAt's normal: SurfaceReflectance summed
+// over the lights, times the albedo and e^(-l sigma~).
 void SurfaceLights(vec3 world, vec3 direction)
 {
+  vec3 v = -direction;
+  vec3 n = g_surfaceNormal;
+  float nv = dot(n, v);
+  if (nv < 0.0 && u_surfaceTwoSided == 1)
+  {
+    n = -n;
+    nv = -nv;
+  }
   vec3 diffuse = vec3(0.0), specular = vec3(0.0);
-#define AVS_SURFACE_LIGHT(j) SurfaceLight(j, world, direction, diffuse, specular);
+#define AVS_SURFACE_LIGHT(j) SurfaceLight(j, world, n, nv, v, diffuse, specular);
   AVS_FOR_EACH_LIGHT(AVS_SURFACE_LIGHT)
-  g_surfaceDiffuse = diffuse;
-  g_surfaceSpecular = specular;
+  // Nothing where the viewer is behind the surface (one-sided).
+  float shadow = nv > 0.0 ? u_albedo * exp(-0.5 * min(u_ambientRadius * g_surfaceAveraged, 1.0)) : 0.0;
+  vec4 k = u_surfaceCoefficients;
+  g_surfaceDiffuse = diffuse * (shadow * k.y / PI);
+  g_surfaceSpecular = specular * (shadow * k.z * (k.w + 2.0) / (2.0 * PI));
 }
 
 // A sample's light point (index `index`, world `world`): the gradient there and the direct
@@ -206,13 +236,15 @@ void SurfacePoint(vec3 index, vec3 world, vec3 direction)
   SurfaceLights(world, direction);
 }
 
-// The direct light a sample (colour `color`, sigma_t `sigma`, P_s from SurfaceShareFor)
-// reflects per unit of T (1 - e^(-sigma dt)): albedo P_s e^(-l sigma~) (c D + S), l = min(r,
-// 1 / sigma) / 2.
-vec3 SurfaceReflected(vec3 color, float sigma)
+// The direct light a sample (colour `color`, P_s from SurfaceShareFor) reflects per unit of T
+// (1 - e^(-sigma dt)): P_s (c D + S) of SurfaceLights.
+vec3 SurfaceReflected(vec3 color)
 {
-  float ball = exp(-0.5 * min(u_ambientRadius, 1.0 / sigma) * g_surfaceAveraged);
-  return (color * g_surfaceDiffuse + g_surfaceSpecular) * (u_albedo * g_surfaceShare * ball);
+#ifdef AVS_SURFACE_PER_PAIR
+  return color * g_surfaceDiffuse + g_surfaceSpecular; // P_s in them
+#else
+  return (color * g_surfaceDiffuse + g_surfaceSpecular) * g_surfaceShare;
+#endif
 }
 #endif
 
@@ -301,6 +333,9 @@ vec3 InScattered(vec4 classified, float tl)
 vec3 g_pairLight = vec3(0.0); // the current pair's light sum (AVS_SAMPLE_PAIRS)
 #ifdef AVS_DIFFUSE
 vec3 g_pairFluence = vec3(0.0); // and what its diffuse field scatters towards the camera
+#ifdef AVS_SURFACE_PER_PAIR
+vec3 g_pairFluenceWhite = vec3(0.0); // and the white part (k_s) its surface returns of it
+#endif
 #endif
 #endif
 
@@ -419,6 +454,24 @@ void EffectLeap(int from, int to)
       g_phiBeforeIndex = pair;
       g_pairFluence = ScatteredFluenceOf(g_phi, g_averaged, slope);
 #endif
+#ifdef AVS_SURFACE_PER_PAIR
+      // The pair's P_s weighs what both its samples return: of the lights' in-scattering
+      // (VolumetricShare), of their direct light (SurfaceReflected) and of the diffuse field
+      // (DiffuseFieldColor = c a + w, with the albedo / (4 pi) the samples would multiply by).
+      SurfaceShareFor(0.0);
+      g_pairLight *= VolumetricShare();
+      g_surfaceDiffuse *= g_surfaceShare;
+      g_surfaceSpecular *= g_surfaceShare;
+#ifdef AVS_DIFFUSE
+      vec4 k = u_surfaceCoefficients;
+      float facing = g_surfaceFacing ? 1.0 : 0.0;
+      vec3 field = g_pairFluence * (u_albedo * (1.0 / (4.0 * PI)));
+      // With the lights' direct light the pair's surface reflects (SurfaceReflected), which
+      // its samples weigh alike: one term per sample for both.
+      g_pairFluenceWhite = field * (g_surfaceShare * facing * k.z) + g_surfaceSpecular;
+      g_pairFluence = field * (1.0 - g_surfaceShare * (1.0 - k.x - facing * k.y)) + g_surfaceDiffuse;
+#endif
+#endif
     }
 #endif
 //AVS::Effect::Sample
@@ -464,7 +517,7 @@ void EffectLeap(int from, int to)
       LightSum(io + ts * id, origin + ts * direction, direction); // (for its light values)
       SurfacePoint(io + ts * id, origin + ts * direction, direction);
       SurfaceShareFor(here.a);
-      L += T * (1.0 - extinction) * SurfaceReflected(here.rgb, here.a);
+      L += T * (1.0 - extinction) * SurfaceReflected(here.rgb);
     }
 #endif
 #ifdef AVS_EMISSION
@@ -483,9 +536,10 @@ void EffectLeap(int from, int to)
     if (here.a > 0.0 && older >= u_termination)
     {
       float lagged = mix(newer, older, g_lagFraction);
-#ifdef AVS_SURFACE
+#if defined(AVS_SURFACE) && !defined(AVS_SURFACE_PER_PAIR)
       // Surfaces: the share of the volumetric light the sample returns, the gradient at its
-      // light point (its pair's, from the pair's snippet; else its own, here).
+      // light point (its pair's, from the pair's snippet; else its own, here). (Per pair: in
+      // g_pairLight already.)
 #ifndef AVS_SAMPLE_PAIRS
       SurfaceGradientAt(coordinate, -direction);
 #endif
@@ -511,7 +565,11 @@ void EffectLeap(int from, int to)
 #else
         vec3 scattered = ScatteredFluence(g_phi, g_averaged, i, dt);
 #endif
-#ifdef AVS_SURFACE
+#if defined(AVS_SURFACE_PER_PAIR)
+        // Surfaces reflect the diffuse field too, and the lights' direct light, weighed in the
+        // pair's snippet.
+        L += T * (1.0 - extinction) * (here.rgb * scattered + g_pairFluenceWhite);
+#elif defined(AVS_SURFACE)
         // Surfaces reflect the diffuse field too (avs_surface.glsl).
         L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * DiffuseFieldColor(here.rgb) *
           scattered;
@@ -520,12 +578,12 @@ void EffectLeap(int from, int to)
 #endif
       }
 #endif
-#ifdef AVS_SURFACE
+#if defined(AVS_SURFACE) && !(defined(AVS_SURFACE_PER_PAIR) && defined(AVS_DIFFUSE))
       // Surfaces: the direct light the sample reflects, with the light values its in-scattering
-      // (or its pair's) read.
+      // (or its pair's) read. (Per pair in the extended model: with the diffuse field, above.)
       if (T >= u_termination)
       {
-        L += T * (1.0 - extinction) * SurfaceReflected(here.rgb, here.a);
+        L += T * (1.0 - extinction) * SurfaceReflected(here.rgb);
       }
 #endif
     }

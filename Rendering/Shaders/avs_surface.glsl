@@ -1,46 +1,47 @@
 // Surfaces inside the medium: the GPU twin of Rendering/Core/SurfaceShading.h, which defines
 // every term (the CPU reference, ReferenceRenderer.cxx, and the CPU path tracer compute the same).
 // Defined with AVS_SURFACE (ShadeOn, VolumetricScatteringBlending below 2): P_s and the normal
-// from the gradient of component AVS_SURFACE_COMPONENT (SurfaceAt: VTK's central differences,
-// one voxel on either side), what a sample returns of the volumetric light (VolumetricShare)
-// and of the extended model's diffuse field (DiffuseFieldColor), the BRDF (SurfaceReflectance)
-// and its lobes (SampleCosine, SamplePhongLobe). Shared by ambient scattering's ray casting
-// (avs_as_effect.glsl, which adds the lights' direct light, SurfaceReflected) and the path
-// tracer (avs_pathtrace_fs.glsl, its surface events), after their classification and lights.
+// from the precomputed gradient of the shading component (u_surfaces, avs::SurfaceGrid: one
+// RGBA8 fetch, SurfaceGradientAt), what a sample returns of the volumetric light
+// (VolumetricShare) and of the extended model's diffuse field (DiffuseFieldColor), the BRDF
+// (SurfaceReflectance) and its lobes (SampleCosine, SamplePhongLobe). Shared by ambient
+// scattering's ray casting (avs_as_effect.glsl, which adds the lights' direct light,
+// SurfaceReflected) and the path tracer (avs_pathtrace_fs.glsl, its surface events), after
+// their classification and lights. P_s is the edge share alone at blending 0; with
+// AVS_SURFACE_BLENDED (above 0) it depends on the sample's opacity too.
 #ifdef AVS_SURFACE
+uniform sampler3D u_surfaces;        // RGB: 128 + 127 n (bytes), n the unit local gradient; A: e
 uniform float u_surfaceBlending;     // B in [0, 2]
 uniform vec4 u_surfaceCoefficients;  // k_a, k_d, k_s, p (resolved: k_a + k_d + k_s <= 1)
 uniform int u_surfaceTwoSided;       // the renderer's TwoSidedLighting
-uniform float u_surfaceInverseRange; // 1 / the shading component's range
-uniform float u_surfaceInverseReference; // 1 / gamma_0
-uniform mat3 u_gradientToWorld;      // the transpose of d index / d world
+uniform mat3 u_surfaceToWorld;       // local gradient -> world gradient
 float g_surfaceShare = 0.0;          // P_s of the last SurfaceAt
+float g_surfaceEdge = 0.0;           // the edge share e of the last SurfaceGradientAt
 vec3 g_surfaceNormal = vec3(0.0);    // its normal, world space
 bool g_surfaceFacing = false;        // whether it reflects towards the camera (SurfaceShading.h)
-float g_surfaceGamma = -1.0;         // the normalised gradient there (-1: none)
 
-float SurfaceProbability(float gamma, float alpha)
+#ifdef AVS_SURFACE_BLENDED
+// P_s from the edge share e and the opacity alpha (avs::SurfaceProbabilityOfEdge).
+float SurfaceProbability(float edge, float alpha)
 {
-  float g = max(gamma, 0.0) * u_surfaceInverseReference;
+  float g = -log(max(1.0 - edge, 1e-6));
   float b = u_surfaceBlending;
   float decay = exp(-b * g * clamp(alpha, 0.0, 1.0));
   float volumetric = b < 1.0 ? b * decay : (2.0 - b) * decay + (b - 1.0);
-  return (1.0 - exp(-g)) * (1.0 - volumetric);
+  return edge * (1.0 - volumetric);
 }
+#endif
 
-// The gradient at volume texture coordinate `coordinate`: gamma, the normal and whether the
-// surface reflects towards `toViewer`, into g_surfaceGamma, g_surfaceNormal, g_surfaceFacing.
+// The gradient at volume texture coordinate `coordinate`: the edge share, the normal and
+// whether the surface reflects towards `toViewer`, into g_surfaceEdge, g_surfaceNormal,
+// g_surfaceFacing.
 void SurfaceGradientAt(vec3 coordinate, vec3 toViewer)
 {
-  vec3 g = vec3(0.0);
-  for (int a = 0; a < 3; ++a)
-  {
-    g[a] = 0.5 * CentralDifference(coordinate, a)[AVS_SURFACE_COMPONENT] * u_surfaceInverseRange;
-  }
-  vec3 world = u_gradientToWorld * g;
-  float len = length(world);
-  g_surfaceGamma = len > 0.0 ? 2.0 * length(g * u_gradientScale) : -1.0;
-  g_surfaceNormal = len > 0.0 ? world * (-1.0 / len) : vec3(0.0);
+  vec4 t = textureLod(u_surfaces, coordinate, 0.0);
+  vec3 world = u_surfaceToWorld * (t.xyz * (255.0 / 127.0) - 128.0 / 127.0);
+  // (Where the gradient vanishes around, e is 0 and the normal nothing.)
+  g_surfaceEdge = t.w;
+  g_surfaceNormal = world * -inversesqrt(max(dot(world, world), 1e-30));
   g_surfaceFacing = u_surfaceTwoSided == 1 || dot(g_surfaceNormal, toViewer) > 0.0;
 }
 
@@ -48,8 +49,11 @@ void SurfaceGradientAt(vec3 coordinate, vec3 toViewer)
 // g_surfaceShare (0 where the gradient vanishes).
 void SurfaceShareFor(float sigma)
 {
-  float alpha = 1.0 - exp(-sigma * u_unitDistance[0]);
-  g_surfaceShare = g_surfaceGamma >= 0.0 ? SurfaceProbability(g_surfaceGamma, alpha) : 0.0;
+#ifdef AVS_SURFACE_BLENDED
+  g_surfaceShare = SurfaceProbability(g_surfaceEdge, 1.0 - exp(-sigma * u_unitDistance[0]));
+#else
+  g_surfaceShare = g_surfaceEdge;
+#endif
 }
 
 // Both, for a sample at `coordinate`.

@@ -141,17 +141,21 @@ int main(int, char*[])
     ExpectBounded(thin, scene, settings.CloudOpacity);
   }
 
-  // Surfaces inside the medium. RMSE of the extended model measured when the bounds were set.
+  // Surfaces inside the medium, on the study's lattice (64 voxels: at 48 the dense scene's
+  // surfaces lose their structure, and VTK 9.6's shaded mapper at its best exposure came within
+  // the truth's noise of ours there, 0.051 against 0.053), with twice the paths (the truth's
+  // noise must stay below a quarter of the errors compared). RMSE of the extended model
+  // measured when the bounds were set.
   AccuracySettings shade;
   shade.ImageSize = 48;
-  shade.Voxels = 48;
-  shade.SamplesPerPixel = 128;
+  shade.Voxels = 64;
+  shade.SamplesPerPixel = 256;
   shade.Shade = true;
   auto shaded = Measure(shade);
-  const std::pair<const char*, double> shadedToday[] = { { "cloud_back", 0.0670 },
-    { "cloud_side", 0.0671 },
-    { "nebula_point", 0.0127 },
-    { "dense_medical", 0.0538 } };
+  const std::pair<const char*, double> shadedToday[] = { { "cloud_back", 0.0675 },
+    { "cloud_side", 0.0634 },
+    { "nebula_point", 0.0101 },
+    { "dense_medical", 0.0385 } };
   for (const auto& [name, measured] : shadedToday)
   {
     const std::string scene = std::string(name) + "_shaded";

@@ -1,11 +1,14 @@
 // Surfaces inside the medium (SurfaceShading.h): the share of surface events, the BRDF's energy,
-// the sides, the path tracer's lobes, and the classifier's normal on structured fields.
+// the sides, the path tracer's lobes, the classifier's normal on structured fields, and the
+// precomputed gradient (SurfaceGrid.h) the renderers read.
 #include "Classifier.h"
 #include "ReferenceRenderer.h"
+#include "SurfaceGrid.h"
 #include "SurfaceShading.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace avs;
@@ -163,4 +166,138 @@ TEST(SurfaceShading, ClassifierNormalPointsDownTheGradient)
   EXPECT_NEAR(p.Normal.x, -1.0, 1e-9);
   EXPECT_NEAR(p.Probability, 1.0 - std::exp(-mean * 0.1 / SurfaceGradientReference), 1e-6);
   EXPECT_EQ(classifier.SurfaceAt({ 10, 2, 2 }, 0.0, 0.0).Probability, 0.0); // no material
+}
+
+namespace
+{
+// s = a x + b y + c z (world units) on a lattice of spacing (0.5, 1, 2), transfer range 0..r.
+VolumeScene Ramp(const Vec3& gradient, double range)
+{
+  VolumeScene scene;
+  GridGeometry g;
+  g.Dimensions = { 9, 7, 6 };
+  g.Spacing = { 0.5, 1.0, 2.0 };
+  scene.Scalars = Grid(g);
+  for (int k = 0; k < 6; ++k)
+    for (int j = 0; j < 7; ++j)
+      for (int i = 0; i < 9; ++i)
+      {
+        scene.Scalars.At(i, j, k) =
+          static_cast<float>(gradient.x * 0.5 * i + gradient.y * 1.0 * j + gradient.z * 2.0 * k);
+      }
+  scene.Transfer.Minimum = 0.0;
+  scene.Transfer.Maximum = range;
+  scene.Transfer.Opacity = { 0.5f, 0.5f };
+  scene.Transfer.Color = { { 1, 1, 1 }, { 1, 1, 1 } };
+  return scene;
+}
+} // namespace
+
+TEST(SurfaceGrid, BytesRoundTrip)
+{
+  EXPECT_EQ(SurfaceGrid::EncodeDirection(0.0), 128);
+  EXPECT_EQ(SurfaceGrid::DecodeDirection(128), 0.0);
+  EXPECT_EQ(SurfaceGrid::EncodeDirection(1.0), 255);
+  EXPECT_EQ(SurfaceGrid::EncodeDirection(-1.0), 1);
+  EXPECT_EQ(SurfaceGrid::EncodeDirection(7.0), 255); // clamped
+  EXPECT_EQ(SurfaceGrid::EncodeEdge(1.0), 255);
+  EXPECT_EQ(SurfaceGrid::EncodeEdge(-1.0), 0);
+  for (int b = 1; b < 256; ++b)
+  {
+    EXPECT_EQ(SurfaceGrid::EncodeDirection(SurfaceGrid::DecodeDirection(b)), b);
+    EXPECT_EQ(SurfaceGrid::EncodeEdge(SurfaceGrid::DecodeEdge(b)), b);
+  }
+}
+
+TEST(SurfaceGrid, RampHasItsDirectionAndEdgeShare)
+{
+  // Inside, the central differences of a linear field are its gradient; at a face they are
+  // one-sided, halved (VTK's clamp). Directions to within a byte, edge shares within one.
+  const Vec3 a{ 30.0, -20.0, 10.0 };
+  const double range = 1000.0;
+  const VolumeScene scene = Ramp(a, range);
+  const SurfaceGrid grid = MakeSurfaceGrid(scene, 2);
+  ASSERT_EQ(grid.Bytes(), 4u * 9 * 7 * 6);
+  const double mean = (0.5 + 1.0 + 2.0) / 3.0;
+  auto check = [&](const Vec3& index, const Vec3& g)
+  {
+    Vec3 direction;
+    double edge;
+    grid.Sample(index, false, direction, edge);
+    const Vec3 unit = g * (1.0 / Length(g));
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(direction[c], unit[c], 0.6 / 127.0) << "component " << c;
+    }
+    EXPECT_NEAR(edge, SurfaceEdge(mean * Length(g) / range), 0.6 / 255.0);
+  };
+  check({ 4, 3, 2 }, a);
+  check({ 4.5, 3.25, 2.75 }, a); // interpolated between interior points
+  check({ 0, 3, 2 }, { 0.5 * a.x, a.y, a.z });
+  check({ 4, 6, 5 }, { a.x, 0.5 * a.y, 0.5 * a.z });
+  // Outside the lattice: clamped to its faces, as a texture clamps to the edge.
+  Vec3 inside, outside;
+  double e1, e2;
+  grid.Sample({ 0, 3, 2 }, false, inside, e1);
+  grid.Sample({ -3, 3, 2 }, false, outside, e2);
+  EXPECT_EQ(e1, e2);
+  EXPECT_EQ(inside.x, outside.x);
+}
+
+TEST(SurfaceGrid, SlicesAndSceneAgreeAndFlatFieldsHaveNone)
+{
+  const VolumeScene scene = Ramp({ 5.0, 0.0, -2.0 }, 100.0);
+  const SurfaceGrid whole = MakeSurfaceGrid(scene, 1);
+  const GridGeometry& g = scene.Scalars.Geometry;
+  const std::size_t slice = static_cast<std::size_t>(g.Dimensions[0]) * g.Dimensions[1];
+  int reads = 0;
+  const SurfaceGrid sliced = MakeSurfaceGrid(
+    g.Dimensions,
+    g.Spacing,
+    1.0 / 100.0,
+    [&](int k, float* out)
+    {
+      ++reads;
+      std::copy_n(scene.Scalars.Values.data() + slice * k, slice, out);
+    },
+    3);
+  EXPECT_EQ(sliced.Texels, whole.Texels);
+  EXPECT_EQ(reads, g.Dimensions[2]); // each slice read once
+  const SurfaceGrid flat = MakeSurfaceGrid(Ramp({ 0.0, 0.0, 0.0 }, 100.0));
+  for (std::size_t v = 0; v < flat.Texels.size(); v += 4)
+  {
+    ASSERT_EQ(flat.Texels[v], 128);
+    ASSERT_EQ(flat.Texels[v + 3], 0);
+  }
+  Classifier classifier(Ramp({ 0.0, 0.0, 0.0 }, 100.0));
+  classifier.SetSurfaceGrid(&flat);
+  EXPECT_EQ(classifier.SurfaceAt({ 3, 3, 3 }, 1.0, 0.0).Probability, 0.0);
+}
+
+TEST(SurfaceGrid, ClassifierReadsTheGridLikeTheCentralDifferences)
+{
+  // With the grid set, SurfaceAt gives what the central differences give, to within the bytes,
+  // at every blending; a volume turned by its direction matrix turns the normal with it.
+  VolumeScene scene = Ramp({ 30.0, -20.0, 10.0 }, 1000.0);
+  scene.Scalars.Geometry.Direction = { 0, -1, 0, 1, 0, 0, 0, 0, 1 };
+  const SurfaceGrid grid = MakeSurfaceGrid(scene);
+  const Classifier exact(scene);
+  Classifier quantised(scene);
+  quantised.SetSurfaceGrid(&grid);
+  for (double blending : { 0.0, 0.5, 1.0, 1.5 })
+  {
+    for (const Vec3& index : { Vec3{ 4, 3, 2 }, Vec3{ 2.5, 4.75, 3.5 } })
+    {
+      const SurfacePoint e = exact.SurfaceAt(index, 0.7, blending);
+      const SurfacePoint q = quantised.SurfaceAt(index, 0.7, blending);
+      EXPECT_NEAR(q.Probability, e.Probability, 0.01) << "blending " << blending;
+      EXPECT_GT(Dot(q.Normal, e.Normal), 0.9999);
+    }
+  }
+  // The world normal: -grad s turned by the direction matrix (x -> y, y -> -x).
+  const Vec3 n = quantised.SurfaceAt({ 4, 3, 2 }, 0.7, 0.0).Normal;
+  const Vec3 local = Vec3{ 30.0, -20.0, 10.0 } * (-1.0 / Length(Vec3{ 30.0, -20.0, 10.0 }));
+  EXPECT_NEAR(n.x, -local.y, 0.01);
+  EXPECT_NEAR(n.y, local.x, 0.01);
+  EXPECT_NEAR(n.z, local.z, 0.01);
 }
