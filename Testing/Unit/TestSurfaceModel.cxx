@@ -263,13 +263,14 @@ TEST(SurfaceGrid, SlicesAndSceneAgreeAndFlatFieldsHaveNone)
     3);
   EXPECT_EQ(sliced.Texels, whole.Texels);
   EXPECT_EQ(reads, g.Dimensions[2]); // each slice read once
-  const SurfaceGrid flat = MakeSurfaceGrid(Ramp({ 0.0, 0.0, 0.0 }, 100.0));
+  const VolumeScene level = Ramp({ 0.0, 0.0, 0.0 }, 100.0);
+  const SurfaceGrid flat = MakeSurfaceGrid(level);
   for (std::size_t v = 0; v < flat.Texels.size(); v += 4)
   {
     ASSERT_EQ(flat.Texels[v], 128);
     ASSERT_EQ(flat.Texels[v + 3], 0);
   }
-  Classifier classifier(Ramp({ 0.0, 0.0, 0.0 }, 100.0));
+  Classifier classifier(level); // (which keeps a reference to the scene)
   classifier.SetSurfaceGrid(&flat);
   EXPECT_EQ(classifier.SurfaceAt({ 3, 3, 3 }, 1.0, 0.0).Probability, 0.0);
 }
