@@ -221,7 +221,8 @@ void SurfaceLights(vec3 world, vec3 direction)
 #define AVS_SURFACE_LIGHT(j) SurfaceLight(j, world, n, nv, v, diffuse, specular);
   AVS_FOR_EACH_LIGHT(AVS_SURFACE_LIGHT)
   // Nothing where the viewer is behind the surface (one-sided).
-  float shadow = nv > 0.0 ? u_albedo * exp(-0.5 * min(u_ambientRadius * g_surfaceAveraged, 1.0)) : 0.0;
+  float shadow =
+    nv > 0.0 ? u_albedo * exp(-0.5 * min(u_ambientRadius * g_surfaceAveraged, 1.0)) : 0.0;
   vec4 k = u_surfaceCoefficients;
   g_surfaceDiffuse = diffuse * (shadow * k.y / PI);
   g_surfaceSpecular = specular * (shadow * k.z * (k.w + 2.0) / (2.0 * PI));
@@ -334,7 +335,9 @@ vec3 g_pairLight = vec3(0.0); // the current pair's light sum (AVS_SAMPLE_PAIRS)
 #ifdef AVS_DIFFUSE
 vec3 g_pairFluence = vec3(0.0); // and what its diffuse field scatters towards the camera
 #ifdef AVS_SURFACE_PER_PAIR
-vec3 g_pairFluenceWhite = vec3(0.0); // and the white part (k_s) its surface returns of it
+// (Per pair, to be multiplied by the colour: with the albedo / (4 pi), weighed by the pair's
+// surface, and the lights' direct light it reflects; and what needs no colour.)
+vec3 g_pairFluenceWhite = vec3(0.0);
 #endif
 #endif
 #endif
@@ -469,7 +472,8 @@ void EffectLeap(int from, int to)
       // With the lights' direct light the pair's surface reflects (SurfaceReflected), which
       // its samples weigh alike: one term per sample for both.
       g_pairFluenceWhite = field * (g_surfaceShare * facing * k.z) + g_surfaceSpecular;
-      g_pairFluence = field * (1.0 - g_surfaceShare * (1.0 - k.x - facing * k.y)) + g_surfaceDiffuse;
+      g_pairFluence =
+        field * (1.0 - g_surfaceShare * (1.0 - k.x - facing * k.y)) + g_surfaceDiffuse;
 #endif
 #endif
     }
