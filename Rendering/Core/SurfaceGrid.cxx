@@ -163,6 +163,11 @@ SurfaceGrid MakeSurfaceGrid(const VolumeScene& scene, int threads)
   const Grid& values = c == 0 ? scene.Scalars : scene.Medium.Components[c - 1].Values;
   const Grid& validity = scene.Medium.Validity;
   const GridGeometry& g = scene.Scalars.Geometry;
+  if (values.Values.size() != g.NumberOfPoints() ||
+    (!validity.Values.empty() && validity.Values.size() != g.NumberOfPoints()))
+  {
+    return SurfaceGrid(); // no values on the host
+  }
   const std::size_t slice = static_cast<std::size_t>(g.Dimensions[0]) * g.Dimensions[1];
   const SurfaceSliceReader read = [&](int k, float* out)
   {

@@ -57,7 +57,8 @@ SurfaceGrid MakeSurfaceGrid(const std::array<int, 3>& dimensions,
   double inverseRange,
   const SurfaceSliceReader& read,
   int threads = 0);
-/// The same from the scene's own grids (Classifier's shading component and range).
+/// The same from the scene's own grids (Classifier's shading component and range); empty where
+/// they hold no values.
 SurfaceGrid MakeSurfaceGrid(const VolumeScene& scene, int threads = 0);
 
 } // namespace avs

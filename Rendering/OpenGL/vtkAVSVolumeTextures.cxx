@@ -553,6 +553,13 @@ bool vtkAVSVolumeTextures::UploadSurfaces(const avs::VolumeScene& scene,
     };
     grid = avs::MakeSurfaceGrid(g.Dimensions, g.Spacing, classifier.ShadingInverseRange(), read);
   }
+  if (grid.Empty())
+  {
+    this->Surfaces.ReleaseGraphicsResources(this->Window);
+    this->SurfacesKey.clear();
+    error = "the surfaces' gradient has no scalars to be made from";
+    return false;
+  }
   std::vector<vtkTextureObject*> held = this->BudgetTextures();
   const std::vector<vtkTextureObject*> own = this->Surfaces.VolumeTextures();
   held.erase(
