@@ -73,6 +73,18 @@ void SurfaceGrid::Sample(const Vec3& index, bool nearest, Vec3& direction, doubl
   edge = DecodeEdge(sum[3]);
 }
 
+void DivideByValidity(const std::vector<float>& validity,
+  std::size_t first,
+  std::size_t count,
+  float* values)
+{
+  for (std::size_t v = 0; v < count; ++v)
+  {
+    const float valid = validity.empty() ? 1.0f : validity[first + v];
+    values[v] = valid > 0.0f && values[v] == values[v] ? values[v] / valid : 0.0f;
+  }
+}
+
 SurfaceGrid MakeSurfaceGrid(const std::array<int, 3>& n,
   const Vec3& spacing,
   double inverseRange,
@@ -172,12 +184,8 @@ SurfaceGrid MakeSurfaceGrid(const VolumeScene& scene, int threads)
   const SurfaceSliceReader read = [&](int k, float* out)
   {
     const std::size_t first = slice * k;
-    for (std::size_t v = 0; v < slice; ++v)
-    {
-      const float value = values.Values[first + v];
-      const float valid = validity.Values.empty() ? 1.0f : validity.Values[first + v];
-      out[v] = valid > 0.0f && value == value ? value / valid : 0.0f;
-    }
+    std::copy_n(values.Values.data() + first, slice, out);
+    DivideByValidity(validity.Values, first, slice, out);
   };
   return MakeSurfaceGrid(g.Dimensions, g.Spacing, classifier.ShadingInverseRange(), read, threads);
 }

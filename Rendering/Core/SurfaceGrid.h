@@ -45,6 +45,14 @@ struct SurfaceGrid
   static double DecodeEdge(double byte) { return byte / 255.0; }
 };
 
+/// The lattice's values `values[0, count)` from point `first` on, divided by the validity there
+/// as the classifier divides them (empty validity: all valid), 0 where it is 0 or a value is NaN:
+/// what a SurfaceSliceReader writes.
+void DivideByValidity(const std::vector<float>& validity,
+  std::size_t first,
+  std::size_t count,
+  float* values);
+
 /// Writes lattice slice k of the shading component (its values divided by the validity, 0 where
 /// that is 0; n0 n1 floats, x fastest) into `out`.
 using SurfaceSliceReader = std::function<void(int k, float* out)>;

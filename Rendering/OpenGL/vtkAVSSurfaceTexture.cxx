@@ -122,13 +122,7 @@ void vtkAVSSurfaceTexture::BindBrick(unsigned int program, int brick, bool neare
   {
     return;
   }
-  for (vtkTextureObject* t : this->VolumeTextures())
-  {
-    if (t->GetTextureUnit() >= 0)
-    {
-      t->Deactivate();
-    }
-  }
+  this->Unbind();
   this->Activate(this->Bricks[b], program, nearest);
 }
 

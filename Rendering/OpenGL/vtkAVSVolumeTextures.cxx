@@ -545,11 +545,7 @@ bool vtkAVSVolumeTextures::UploadSurfaces(const avs::VolumeScene& scene,
     {
       const std::size_t first = slice * static_cast<std::size_t>(k);
       source.Read(c, first, first + slice, out);
-      for (std::size_t v = 0; v < slice; ++v)
-      {
-        const float valid = validity.empty() ? 1.0f : validity[first + v];
-        out[v] = valid > 0.0f && out[v] == out[v] ? out[v] / valid : 0.0f;
-      }
+      avs::DivideByValidity(validity, first, slice, out);
     };
     grid = avs::MakeSurfaceGrid(g.Dimensions, g.Spacing, classifier.ShadingInverseRange(), read);
   }
