@@ -85,9 +85,11 @@ vec4 Components(vec4 raw, float valid)
 #endif
 }
 
+#if AVS_GRADIENT != 0
 // VTK's central difference s(x + e_a) - s(x - e_a) of the components along index axis a at
 // `coordinate` (one voxel on either side; the texture clamps at the faces): what gradient
-// opacity and the surfaces' normal (avs_surface.glsl) are made of.
+// opacity is made of. (The surfaces' normal comes from the same differences, taken on the host:
+// avs::SurfaceGrid.)
 vec4 CentralDifference(vec3 coordinate, int a)
 {
   vec3 e = vec3(0.0);
@@ -97,7 +99,6 @@ vec4 CentralDifference(vec3 coordinate, int a)
   return Components(p, Validity(p, coordinate + e)) - Components(m, Validity(m, coordinate - e));
 }
 
-#if AVS_GRADIENT != 0
 // The components' gradient magnitudes at `coordinate`.
 vec4 GradientMagnitudes(vec3 coordinate)
 {
