@@ -101,6 +101,13 @@ std::string vtkAVSShaderAssembly::RayCastDefines(avs::RenderMode mode,
   if (extended)
   {
     defines += "#define AVS_DIFFUSE\n";
+    // With anisotropic scattering the diffuse field's flux along the ray counts too (phi's
+    // derivative along the ray); with g = 0 it drops out, and with it a fetch and a division
+    // per pair.
+    if (p.Anisotropy != 0.0)
+    {
+      defines += "#define AVS_DIFFUSE_ANISOTROPIC\n";
+    }
   }
   // Light-volume textures to fetch: lights 0-3, 4-7.
   const int n = static_cast<int>(lights.size());

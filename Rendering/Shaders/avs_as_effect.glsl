@@ -35,14 +35,17 @@
 // averaged sigma_t in alpha; the ring's samples keep the phi their InScattered (with pairs: the
 // pair's snippet) read.
 uniform sampler3D u_diffuse;
-uniform float u_anisotropy;
-uniform float u_reducedFloor; // 1 / the flux limiter's transport length
 vec3 g_phi = vec3(0.0);
 float g_averaged = 0.0;
+#ifdef AVS_DIFFUSE_ANISOTROPIC
+// Anisotropic scattering (g != 0): phi's derivative along the ray weighs the flux J.w.
+uniform float u_anisotropy;
+uniform float u_reducedFloor; // 1 / the flux limiter's transport length
 // The previous sample's (or pair's) phi and its index (-100: none), for phi's derivative along
 // the ray.
 vec3 g_phiBefore = vec3(0.0);
 int g_phiBeforeIndex = -100;
+#endif
 #elif !defined(AVS_AVERAGED_SLOT)
 uniform sampler3D u_averagedExtinction;
 #endif
@@ -64,7 +67,7 @@ uniform float u_tableTauMaximum;
 uniform float u_albedo;
 uniform float u_ambientRadius;
 uniform float u_emissionWeight;
-#ifdef AVS_DIFFUSE
+#ifdef AVS_DIFFUSE_ANISOTROPIC
 // What the diffuse field scatters towards the camera (DiffuseFluence.h, ScatteredFluence):
 // phi + g clamp(3 J.w, -phi, phi), J.w = D dphi/dt along the ray, dphi/dt = slope.
 vec3 ScatteredFluenceOf(vec3 phi, float averaged, vec3 slope)
@@ -80,6 +83,13 @@ vec3 ScatteredFluence(vec3 phi, float averaged, int i, float dt)
   g_phiBefore = phi;
   g_phiBeforeIndex = i;
   return ScatteredFluenceOf(phi, averaged, slope);
+}
+#elif defined(AVS_DIFFUSE)
+// Isotropic scattering (g = 0, the default): the flux term vanishes, and what the diffuse
+// field scatters towards the camera is phi (its positive part), with no derivative to track.
+vec3 ScatteredFluence(vec3 phi, float averaged, int i, float dt)
+{
+  return max(phi, vec3(0.0));
 }
 #endif
 
@@ -333,10 +343,11 @@ vec3 InScattered(vec4 classified, float tl)
 #endif
 vec3 g_pairLight = vec3(0.0); // the current pair's light sum (AVS_SAMPLE_PAIRS)
 #ifdef AVS_DIFFUSE
-vec3 g_pairFluence = vec3(0.0); // and what its diffuse field scatters towards the camera
+// And what its diffuse field scatters towards the camera, times albedo / (4 pi).
+vec3 g_pairFluence = vec3(0.0);
 #ifdef AVS_SURFACE_PER_PAIR
-// (Per pair, to be multiplied by the colour: with the albedo / (4 pi), weighed by the pair's
-// surface, and the lights' direct light it reflects; and what needs no colour.)
+// (Per pair, to be multiplied by the colour: weighed by the pair's surface, with the lights'
+// direct light it reflects; and what needs no colour.)
 vec3 g_pairFluenceWhite = vec3(0.0);
 #endif
 #endif
@@ -376,14 +387,14 @@ void EffectLeap(int from, int to)
   g_tableScale = (u_tableSize - 1.0) / u_tableSize;
   g_tableOffset = 0.5 / u_tableSize;
   g_tauScale = 1.0 / log(1.0 + u_tableTauMaximum);
-#ifdef AVS_DIFFUSE
+#ifdef AVS_DIFFUSE_ANISOTROPIC
   // None yet: per ray (a fragment may cast several: the image sample distance).
   g_phiBeforeIndex = -100;
 #endif
 #ifdef AVS_BRICKED
   g_parity = brickFirst & 1;
 #endif
-#if defined(AVS_SAMPLE_PAIRS) && defined(AVS_DIFFUSE) && defined(AVS_BRICKED)
+#if defined(AVS_SAMPLE_PAIRS) && defined(AVS_DIFFUSE_ANISOTROPIC) && defined(AVS_BRICKED)
   // A brick's first pair takes dphi/dt from the unsplit ray's pair before it (in the bricks in
   // front), as the unsplit ray does.
   if (brickFirst - g_parity >= 2)
@@ -436,7 +447,7 @@ void EffectLeap(int from, int to)
       // Surfaces: the pair's gradient and reflected light, at the same point.
       SurfacePoint(io + tp * id, origin + tp * direction, direction);
 #endif
-#ifdef AVS_DIFFUSE
+#ifdef AVS_DIFFUSE_ANISOTROPIC
       // dphi/dt from the pair before (two steps back; 0 at the unsplit ray's first pair), its
       // phi read here where that pair had no material or was leapt over.
       bool before = g_phiBeforeIndex == pair - 2;
@@ -455,12 +466,14 @@ void EffectLeap(int from, int to)
       vec3 slope = before ? (g_phi - g_phiBefore) / (2.0 * dt) : vec3(0.0);
       g_phiBefore = g_phi;
       g_phiBeforeIndex = pair;
-      g_pairFluence = ScatteredFluenceOf(g_phi, g_averaged, slope);
+      g_pairFluence = ScatteredFluenceOf(g_phi, g_averaged, slope) * (u_albedo / (4.0 * PI));
+#elif defined(AVS_DIFFUSE)
+      g_pairFluence = max(g_phi, vec3(0.0)) * (u_albedo / (4.0 * PI));
 #endif
 #ifdef AVS_SURFACE_PER_PAIR
       // The pair's P_s weighs what both its samples return: of the lights' in-scattering
       // (VolumetricShare), of their direct light (SurfaceReflected) and of the diffuse field
-      // (DiffuseFieldColor = c a + w, with the albedo / (4 pi) the samples would multiply by).
+      // (DiffuseFieldColor = c a + w).
       SurfaceShareFor(0.0);
       g_pairLight *= VolumetricShare();
       g_surfaceDiffuse *= g_surfaceShare;
@@ -468,12 +481,11 @@ void EffectLeap(int from, int to)
 #ifdef AVS_DIFFUSE
       vec4 k = u_surfaceCoefficients;
       float facing = g_surfaceFacing ? 1.0 : 0.0;
-      vec3 field = g_pairFluence * (u_albedo * (1.0 / (4.0 * PI)));
       // With the lights' direct light the pair's surface reflects (SurfaceReflected), which
       // its samples weigh alike: one term per sample for both.
-      g_pairFluenceWhite = field * (g_surfaceShare * facing * k.z) + g_surfaceSpecular;
+      g_pairFluenceWhite = g_pairFluence * (g_surfaceShare * facing * k.z) + g_surfaceSpecular;
       g_pairFluence =
-        field * (1.0 - g_surfaceShare * (1.0 - k.x - facing * k.y)) + g_surfaceDiffuse;
+        g_pairFluence * (1.0 - g_surfaceShare * (1.0 - k.x - facing * k.y)) + g_surfaceDiffuse;
 #endif
 #endif
     }
@@ -487,7 +499,7 @@ void EffectLeap(int from, int to)
     {
       float tl = LightT(i);
       vec4 diffuse = textureLod(u_diffuse, (io + tl * id) * g_lightScale + g_lightOffset, 0.0);
-#ifdef AVS_LIGHTS_PER_PAIR
+#if defined(AVS_LIGHTS_PER_PAIR) && defined(AVS_DIFFUSE_ANISOTROPIC)
       // dphi/dt from the pair before, two steps back (none before the unsplit ray's first).
       vec3 before = textureLod(
         u_diffuse, (io + (tl - 2.0 * dtWorld) * id) * g_lightScale + g_lightOffset, 0.0).rgb;
@@ -550,7 +562,13 @@ void EffectLeap(int from, int to)
       SurfaceShareFor(here.a);
       lagged *= VolumetricShare();
 #endif
-#ifdef AVS_SAMPLE_PAIRS
+#if defined(AVS_SAMPLE_PAIRS) && defined(AVS_DIFFUSE) && !defined(AVS_SURFACE)
+      // With the diffuse field's light at the sample itself (T <= older: every sample that
+      // adds it passed the test above; T (1 - e^(-sigma dt)) where T is above the threshold),
+      // both times the colour: one term.
+      float diffuseWeight = T >= u_termination ? T * (1.0 - extinction) : 0.0;
+      L += here.rgb * (lagged * dt * here.a * g_pairLight + diffuseWeight * g_pairFluence);
+#elif defined(AVS_SAMPLE_PAIRS)
       L += lagged * dt * here.a * here.rgb * g_pairLight;
 #else
       L += lagged * dt * InScattered(here, t);
@@ -558,16 +576,16 @@ void EffectLeap(int from, int to)
       SurfaceLights(origin + t * direction, direction); // with the lights just read
 #endif
 #endif
-#ifdef AVS_DIFFUSE
+#if defined(AVS_DIFFUSE) && !(defined(AVS_SAMPLE_PAIRS) && !defined(AVS_SURFACE))
       // The extended model's diffuse light at the sample itself (T <= older: every sample
       // that adds it passed the test above), phi from the pair's snippet or from the
-      // InScattered just now.
+      // InScattered just now, times albedo / (4 pi). (Pairs without surfaces: above.)
       if (T >= u_termination)
       {
 #ifdef AVS_SAMPLE_PAIRS
         vec3 scattered = g_pairFluence;
 #else
-        vec3 scattered = ScatteredFluence(g_phi, g_averaged, i, dt);
+        vec3 scattered = ScatteredFluence(g_phi, g_averaged, i, dt) * (u_albedo / (4.0 * PI));
 #endif
 #if defined(AVS_SURFACE_PER_PAIR)
         // Surfaces reflect the diffuse field too, and the lights' direct light, weighed in the
@@ -575,10 +593,9 @@ void EffectLeap(int from, int to)
         L += T * (1.0 - extinction) * (here.rgb * scattered + g_pairFluenceWhite);
 #elif defined(AVS_SURFACE)
         // Surfaces reflect the diffuse field too (avs_surface.glsl).
-        L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * DiffuseFieldColor(here.rgb) *
-          scattered;
+        L += T * (1.0 - extinction) * DiffuseFieldColor(here.rgb) * scattered;
 #else
-        L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * here.rgb * scattered;
+        L += T * (1.0 - extinction) * here.rgb * scattered;
 #endif
       }
 #endif

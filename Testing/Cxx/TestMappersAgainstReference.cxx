@@ -128,6 +128,10 @@ int main(int argc, char* argv[])
         s->SetDiffusionVolumeMaximumDimension(view == 2 ? 12 : 64);
         s->SetEmissionWeight(emission);
       }
+      // The extended model isotropic (g = 0: the program without the diffuse field's flux
+      // term, ray-caster ring and explicit look-ahead) in the last two views.
+      const double extendedAnisotropy = view >= 2 ? 0.0 : 0.4;
+      asx->SetAnisotropy(extendedAnisotropy);
       ao->SetOcclusionVolumeMaximumDimension(view == 2 ? 20 : 256);
       ao->SetDirectLightWeight(direct);
       ao->SetEmissionWeight(emission);
@@ -177,7 +181,7 @@ int main(int argc, char* argv[])
       reference->SetDiffusionVolumeMaximumDimension(view == 2 ? 12 : 64);
       reference->SetOcclusionVolumeMaximumDimension(view == 2 ? 20 : 256);
       // The AO mapper's direct light scatters with albedo 1 and g = 0.
-      reference->SetAnisotropy(m == 1 ? 0.0 : 0.4);
+      reference->SetAnisotropy(m == 1 ? 0.0 : (m == 3 ? extendedAnisotropy : 0.4));
       // (the reference renderer's model: the paper's unless m == 3)
       reference->SetAlbedo(m == 1 ? 1.0 : 0.9);
       reference->Update();
@@ -230,6 +234,7 @@ int main(int argc, char* argv[])
     vtkNew<vtkVolumeProperty> dense;
     dense->DeepCopy(property);
     dense->SetScalarOpacityUnitDistance(0.005);
+    asx->SetAnisotropy(0.4);
     for (int m = 2; m < 4; ++m)
     {
       vtkAmbientScatteringVolumeMapper* s = scattering[m - 2];
