@@ -2,6 +2,7 @@
 
 #include "vtkAVSPrecomputeInputs.h"
 #include "vtkAVSRayCaster.h"
+#include "vtkAVSVolumeMapper.h"
 
 #include "AmbientOcclusion.h"
 
@@ -58,6 +59,10 @@ bool vtkAVSOcclusionVolume::Update(const vtkAVSPrecomputeInputs& inputs, std::st
   this->Dimensions = occlusionGrid.Dimensions;
   this->Uploaded = true;
   ++this->Rebuilds;
+  if (inputs.StageDone)
+  {
+    inputs.StageDone(vtkAVSVolumeMapper::LightVolumeStage); // (the light volumes' stage)
+  }
   return true;
 }
 

@@ -53,6 +53,8 @@ struct vtkAVSPrecomputeInputs
     AverageAcrossPieces;
   /// The mapper's UpdateProgress.
   std::function<void(double)> Progress;
+  /// The end of one of the render's stages (vtkAVSVolumeMapper::RenderStage), for StageTiming.
+  std::function<void(int)> StageDone;
 };
 
 #endif

@@ -2,6 +2,7 @@
 
 #include "vtkAVSPrecomputeInputs.h"
 #include "vtkAVSRayCaster.h"
+#include "vtkAVSVolumeMapper.h"
 
 #include "AveragedExtinction.h"
 #include "DiffuseFluence.h"
@@ -47,11 +48,29 @@ bool vtkAVSScatteringVolumes::Update(const vtkAVSPrecomputeInputs& inputs,
   const avs::GridGeometry lightGrid = inputs.Whole->Capped(rp.LightVolumeMaximumDimension);
   bool rebuilt = false;
   const int lightRebuilds = this->LightVolumeRebuilds;
-  if (!this->UpdateAveraged(inputs, lightGrid, gpu, error) ||
-    !this->UpdateLights(inputs, lightGrid, gpu, rebuilt, error) ||
-    !this->UpdateDiffuse(inputs, lightGrid, gpu, rebuilt, error))
+  if (!this->UpdateAveraged(inputs, lightGrid, gpu, error))
   {
     return false;
+  }
+  if (inputs.StageDone)
+  {
+    inputs.StageDone(vtkAVSVolumeMapper::AveragedExtinctionStage);
+  }
+  if (!this->UpdateLights(inputs, lightGrid, gpu, rebuilt, error))
+  {
+    return false;
+  }
+  if (inputs.StageDone)
+  {
+    inputs.StageDone(vtkAVSVolumeMapper::LightVolumeStage);
+  }
+  if (!this->UpdateDiffuse(inputs, lightGrid, gpu, rebuilt, error))
+  {
+    return false;
+  }
+  if (inputs.StageDone)
+  {
+    inputs.StageDone(vtkAVSVolumeMapper::DiffusionStage);
   }
   if (this->LightVolumeRebuilds != lightRebuilds)
   {

@@ -175,6 +175,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   {
     return false;
   }
+  this->MarkStage(InputStage);
   // Surfaces are lit on one side or two as the renderer lights surfaces (SurfaceShading.h).
   in.Parameters.Surface.TwoSided = renderer->GetTwoSidedLighting() != 0;
   const avs::ScatteringParameters& rp = in.Parameters;
@@ -253,6 +254,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
     vtkErrorMacro("Cannot render: " << error);
     return false;
   }
+  this->MarkStage(UploadStage);
 
   // The subclass's precomputed volumes (vtkAVSOcclusionVolume, vtkAVSScatteringVolumes).
   vtkAVSPrecomputeInputs inputs;
@@ -275,6 +277,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   { return this->AverageAcrossPieces(grid, sum, message); };
   inputs.AverageAcrossPieces = average;
   inputs.Progress = [this](double progress) { this->UpdateProgress(progress); };
+  inputs.StageDone = [this](int stage) { this->MarkStage(stage); };
   return this->PrepareLighting(inputs);
 }
 
@@ -378,6 +381,7 @@ void vtkAVSVolumeMapper::GPURender(vtkRenderer* renderer,
   const vtkAVSTextureMemory::ScopedBudget budget(this->MaximumGPUMemory > 0
       ? this->MaximumGPUMemory * 1024.0 * 1024.0
       : in.RayCaster.ReportedGPUMemoryBytes());
+  this->StartStages();
   if (!this->Prepare(renderer, volume, assembly.Interactive))
   {
     // Nothing of a volume that could not be prepared stays on the GPU (one that does not fit
@@ -406,6 +410,7 @@ void vtkAVSVolumeMapper::GPURender(vtkRenderer* renderer,
     vtkErrorMacro("Cannot render: " << error);
     return;
   }
+  this->MarkStage(FrameStage);
   if (adjust && !in.RayCaster.GetLastRefined()) // (a refined frame is no ray-casting pass)
   {
     assembly.Window->WaitForCompletion();
@@ -427,6 +432,44 @@ void vtkAVSVolumeMapper::GPURender(vtkRenderer* renderer,
   {
     ++this->NumberOfInteractiveFrames;
   }
+}
+
+void vtkAVSVolumeMapper::StartStages()
+{
+  std::fill(std::begin(this->LastStageSeconds), std::end(this->LastStageSeconds), 0.0);
+  vtkOpenGLRenderWindow* window = this->Internal->RayCaster.GetWindow();
+  if (this->StageTiming && window)
+  {
+    window->WaitForCompletion(); // (what was queued before is no stage of this render)
+    this->Internal->StageMark = std::chrono::steady_clock::now();
+  }
+}
+
+void vtkAVSVolumeMapper::MarkStage(int stage)
+{
+  vtkOpenGLRenderWindow* window = this->Internal->RayCaster.GetWindow();
+  if (!this->StageTiming || !window || stage < 0 || stage >= NumberOfRenderStages)
+  {
+    return;
+  }
+  window->WaitForCompletion();
+  const auto now = std::chrono::steady_clock::now();
+  this->LastStageSeconds[stage] +=
+    std::chrono::duration<double>(now - this->Internal->StageMark).count();
+  this->Internal->StageMark = now;
+}
+
+double vtkAVSVolumeMapper::GetLastStageSeconds(int stage) const
+{
+  return stage >= 0 && stage < NumberOfRenderStages ? this->LastStageSeconds[stage] : 0.0;
+}
+
+const char* vtkAVSVolumeMapper::GetRenderStageName(int stage)
+{
+  static const char* const names[NumberOfRenderStages] = {
+    "input", "upload", "averaged_extinction", "light_volumes", "diffusion", "frame"
+  };
+  return stage >= 0 && stage < NumberOfRenderStages ? names[stage] : "";
 }
 
 void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
@@ -454,6 +497,13 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastExposure: " << this->LastExposure << "\n";
   os << indent << "LastToneMapping: " << this->LastToneMapping << "\n";
   os << indent << "PrecomputeOnGPU: " << (this->PrecomputeOnGPU ? "On" : "Off") << "\n";
+  os << indent << "StageTiming: " << (this->StageTiming ? "On" : "Off") << "\n";
+  os << indent << "LastStageSeconds:";
+  for (int stage = 0; stage < NumberOfRenderStages; ++stage)
+  {
+    os << " " << GetRenderStageName(stage) << " " << this->LastStageSeconds[stage];
+  }
+  os << "\n";
   os << indent << "LightVolumesOnGPU: " << (this->GetLightVolumesOnGPU() ? "yes" : "no") << "\n";
   os << indent << "OcclusionOnGPU: " << (this->GetOcclusionOnGPU() ? "yes" : "no") << "\n";
   os << indent << "EmptySpaceSkipping: " << (this->EmptySpaceSkipping ? "On" : "Off") << "\n";

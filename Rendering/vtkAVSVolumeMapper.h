@@ -286,6 +286,40 @@ public:
   vtkGetMacro(LastDataUploadFraction, double);
 
   /**
+   * A render's stages, for GetLastStageSeconds: the input's conversion and fingerprints
+   * (InputStage); the uploads of the data, the classification and the surfaces' gradient
+   * (UploadStage); the averaged extinction (AveragedExtinctionStage); the light volumes, or the
+   * ambient-occlusion volume (LightVolumeStage); the extended model's diffusion
+   * (DiffusionStage); the frame: its assembly and the ray-casting pass (FrameStage).
+   */
+  enum RenderStage
+  {
+    InputStage = 0,
+    UploadStage,
+    AveragedExtinctionStage,
+    LightVolumeStage,
+    DiffusionStage,
+    FrameStage,
+    NumberOfRenderStages
+  };
+
+  ///@{
+  /**
+   * Timing of each render's stages, for profiling (off by default). When on, a render waits for
+   * the GPU at the end of each stage, so it is a little slower, and GetLastStageSeconds(stage)
+   * is the wall time the last render spent in that stage (0 for a stage it did not run, and
+   * when off). avs-bench-mappers --time-series prints a time step's breakdown with it.
+   */
+  vtkSetMacro(StageTiming, vtkTypeBool);
+  vtkGetMacro(StageTiming, vtkTypeBool);
+  vtkBooleanMacro(StageTiming, vtkTypeBool);
+  double GetLastStageSeconds(int stage) const;
+  /// The stage's name ("input", "upload", "averaged_extinction", "light_volumes", "diffusion",
+  /// "frame"); "" for a number that is no stage.
+  static const char* GetRenderStageName(int stage);
+  ///@}
+
+  /**
    * Ambient scattering's path-traced refinement (vtkAmbientScatteringVolumeMapper::
    * SetPathTracedRefinement): the path-traced samples per pixel taken since the last change
    * (0 when off, and for the other mappers).
@@ -528,6 +562,9 @@ protected:
   vtkTypeBool PathTracedRefinement = 0; ///< ambient scattering only
   int MaximumSamplesPerPixel = 1024;
 
+  vtkTypeBool StageTiming = 0;
+  double LastStageSeconds[NumberOfRenderStages] = {};
+
   int NumberOfDataUploads = 0;
   int NumberOfRenderedFrames = 0;
   int NumberOfInteractiveFrames = 0;
@@ -552,6 +589,10 @@ private:
   /// Converts, checks, uploads and precomputes what changed; an interactive frame keeps the light
   /// volumes of camera-following lights.
   bool Prepare(vtkRenderer* renderer, vtkVolume* volume, bool interactive);
+  /// With StageTiming on: the GPU's work finished, the time since the last mark added to the
+  /// stage's (StartStages starts the clock, once per render).
+  void StartStages();
+  void MarkStage(int stage);
   /// Prepare's first part, without a renderer or GL: the input, the mask, the property, the
   /// piece, the parameters, the transforms and the clip region, converted and checked when they
   /// changed (errors reported).

@@ -35,6 +35,7 @@
 #include "vtkVolumeProperty.h"
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -132,6 +133,8 @@ struct vtkAVSVolumeMapper::Internals
   std::vector<bool> FollowsCamera; ///< per light: a headlight or camera light
   /// The ray-casting pass's measured cost (AutoAdjustSampleDistances); 0: not measured yet.
   double SecondsPerRay = 0.0;
+  /// StageTiming: the end of the last stage marked.
+  std::chrono::steady_clock::time_point StageMark;
 };
 
 /// The frame being drawn (vtkAVSVolumeMapper::Render): its window, its role among the render

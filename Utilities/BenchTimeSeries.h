@@ -8,6 +8,9 @@
 // ambient scattering in the paper's model (as) and the extended one (asx); with four lights:
 // VTK's shaded, as4 and asx4. Reported: each mapper's median step after the first (which
 // compiles the programs and allocates), and the median over the steps of the per-step ratios.
+// Then our mappers' steps again with StageTiming on (the GPU finished after each stage), the
+// median of each stage over the steps: where a step's time goes
+// ("bench timestep_stage_MAPPER_STAGE", stages as vtkAVSVolumeMapper::RenderStage names them).
 #ifndef avs_BenchTimeSeries_h
 #define avs_BenchTimeSeries_h
 
@@ -104,11 +107,15 @@ inline bool RunTimeSeries(Bench& b, int steps, const std::string& scene)
     voxelsPerStep);
 
   // One group of mappers with `lights` lights: each step's time per mapper (steps after the
-  // first).
+  // first), and with StageTiming on the stages' times per mapper and stage.
+  using StageTimes = std::vector<std::vector<std::vector<double>>>;
+  StageTimes stageTimes;
   auto play = [&](int lights,
                 const std::vector<vtkVolumeMapper*>& mappers,
                 const std::vector<vtkVolumeProperty*>& properties)
   {
+    stageTimes.assign(
+      mappers.size(), std::vector<std::vector<double>>(vtkAVSVolumeMapper::NumberOfRenderStages));
     b.SetLights(lights);
     std::vector<vtkSmartPointer<vtkVolume>> volumes;
     for (std::size_t m = 0; m < mappers.size(); ++m)
@@ -119,6 +126,12 @@ inline bool RunTimeSeries(Bench& b, int steps, const std::string& scene)
       b.Renderer->AddVolume(volumes.back());
     }
     std::vector<std::vector<double>> times(mappers.size());
+    std::vector<int> uploadsBefore;
+    for (vtkVolumeMapper* m : mappers)
+    {
+      auto* mine = vtkAVSVolumeMapper::SafeDownCast(m);
+      uploadsBefore.push_back(mine ? mine->GetNumberOfDataUploads() : 0);
+    }
     for (int step = 0; step < steps; ++step)
     {
       MoveAlongX(original, values, dimensions, step * voxelsPerStep);
@@ -127,18 +140,25 @@ inline bool RunTimeSeries(Bench& b, int steps, const std::string& scene)
       for (std::size_t m = 0; m < mappers.size(); ++m)
       {
         const double t = b.FrameOf(volumes, m);
+        auto* mine = vtkAVSVolumeMapper::SafeDownCast(mappers[m]);
         if (step > 0)
         {
           times[m].push_back(t);
+          for (int stage = 0; mine && stage < vtkAVSVolumeMapper::NumberOfRenderStages; ++stage)
+          {
+            stageTimes[m][static_cast<std::size_t>(stage)].push_back(
+              mine->GetLastStageSeconds(stage));
+          }
         }
       }
     }
     b.RemoveVolumes(volumes);
     // Each of ours uploaded every step (else the series measured nothing new).
-    for (vtkVolumeMapper* m : mappers)
+    for (std::size_t m = 0; m < mappers.size(); ++m)
     {
-      auto* mine = vtkAVSVolumeMapper::SafeDownCast(m);
-      uploadedEveryStep = uploadedEveryStep && (!mine || mine->GetNumberOfDataUploads() == steps);
+      auto* mine = vtkAVSVolumeMapper::SafeDownCast(mappers[m]);
+      uploadedEveryStep =
+        uploadedEveryStep && (!mine || mine->GetNumberOfDataUploads() - uploadsBefore[m] == steps);
     }
     return times;
   };
@@ -189,6 +209,39 @@ inline bool RunTimeSeries(Bench& b, int steps, const std::string& scene)
   std::printf("ratio %s %.3f\n",
     name("timestep_asx4_over_vtk_shaded").c_str(),
     medianRatio(four[2], four[0]));
+
+  // The breakdown: our mappers again, each stage timed (the GPU finished after each).
+  auto breakdown = [&](int lights,
+                     const std::vector<vtkAVSVolumeMapper*>& mappers,
+                     const std::vector<std::string>& names)
+  {
+    std::vector<vtkVolumeMapper*> played;
+    std::vector<vtkVolumeProperty*> properties;
+    for (vtkAVSVolumeMapper* m : mappers)
+    {
+      m->StageTimingOn();
+      played.push_back(m);
+      properties.push_back(b.Property);
+    }
+    const auto steps = play(lights, played, properties);
+    for (std::size_t m = 0; m < mappers.size(); ++m)
+    {
+      mappers[m]->StageTimingOff();
+      for (int stage = 0; stage < vtkAVSVolumeMapper::NumberOfRenderStages; ++stage)
+      {
+        std::printf("bench %s %.4f s\n",
+          name("timestep_stage_" + names[m] + "_" + vtkAVSVolumeMapper::GetRenderStageName(stage))
+            .c_str(),
+          Median(stageTimes[m][static_cast<std::size_t>(stage)]));
+      }
+      std::printf(
+        "bench %s %.4f s\n", name("timestep_timed_" + names[m]).c_str(), Median(steps[m]));
+    }
+  };
+  std::printf("# the steps' breakdown: each stage's median, the GPU finished after each "
+              "(timestep_timed_*: the whole step so timed)\n");
+  breakdown(1, { ea, as, asx }, { "ea", "as", "asx" });
+  breakdown(4, { as4, asx4 }, { "as4", "asx4" });
   return uploadedEveryStep;
 }
 

@@ -100,7 +100,47 @@ int main(int, char*[])
       Scene scene(mapper, data);
       for (int i = 0; i < 3; ++i)
       {
+        // (The first render with its stages timed, the second without.)
+        if (ours)
+        {
+          ours->SetStageTiming(i == 0);
+        }
         scene.Window->Render();
+        if (ours)
+        {
+          // Timed: the input, its upload and the frame took time, the precomputed volumes
+          // where the mapper has them (ambient scattering's default, the extended model: the
+          // averaged extinction, the light volumes and the diffusion; ambient occlusion's
+          // volume), and no more than the whole render. Untimed: nothing.
+          double sum = 0.0;
+          for (int stage = 0; stage < vtkAVSVolumeMapper::NumberOfRenderStages; ++stage)
+          {
+            sum += ours->GetLastStageSeconds(stage);
+          }
+          const bool scattering = ours == static_cast<vtkAVSVolumeMapper*>(as);
+          auto took = [&](int stage) { return ours->GetLastStageSeconds(stage) > 0.0; };
+          if (i == 0)
+          {
+            std::cout << name << " stages:";
+            for (int stage = 0; stage < vtkAVSVolumeMapper::NumberOfRenderStages; ++stage)
+            {
+              std::cout << " " << vtkAVSVolumeMapper::GetRenderStageName(stage) << " "
+                        << ours->GetLastStageSeconds(stage);
+            }
+            std::cout << "\n";
+            AVS_CHECK(took(vtkAVSVolumeMapper::InputStage));
+            AVS_CHECK(took(vtkAVSVolumeMapper::UploadStage));
+            AVS_CHECK(took(vtkAVSVolumeMapper::FrameStage));
+            AVS_CHECK(took(vtkAVSVolumeMapper::AveragedExtinctionStage) == scattering);
+            AVS_CHECK(took(vtkAVSVolumeMapper::LightVolumeStage) == (ours != ea.Get()));
+            AVS_CHECK(took(vtkAVSVolumeMapper::DiffusionStage) == scattering);
+            AVS_CHECK(sum <= ours->GetTimeToDraw());
+          }
+          else
+          {
+            AVS_CHECK(sum == 0.0);
+          }
+        }
       }
       std::cout << name << ": " << scene.Log.Events << "\n";
       AVS_CHECK(scene.Log.Events == "SESESE");
