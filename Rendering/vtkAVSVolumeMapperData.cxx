@@ -10,6 +10,7 @@
 #include "vtkAVSPropertyTranslator.h"
 
 #include "vtkAlgorithm.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkMatrix3x3.h"
@@ -93,11 +94,21 @@ vtkImageData* vtkAVSVolumeMapper::PrepareInput()
   vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
   if (!input)
   {
+    vtkDataObject* given = this->GetInputDataObject(0, 0);
     if (vtkDataSet* other = this->GetInput())
     {
       vtkErrorMacro("Cannot render: no input image data (the input is a "
         << other->GetClassName()
         << "; these mappers take vtkImageData: resample it, e.g. with vtkResampleToImage).");
+    }
+    else if (vtkCompositeDataSet::SafeDownCast(given))
+    {
+      // (vtkMultiBlockDataSet, vtkPartitionedDataSet, ...: several pieces in one process.)
+      vtkErrorMacro("Cannot render: the input is a "
+        << given->GetClassName()
+        << ", a composite dataset; these mappers take one vtkImageData (composite inputs are not "
+           "supported yet: append the image blocks into one image, e.g. with vtkImageAppend, "
+           "or give each block a volume of its own).");
     }
     else
     {
