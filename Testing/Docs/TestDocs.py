@@ -223,6 +223,14 @@ def commands_of(text):
     return [c for c in commands if c]
 
 
+def program_of(token):
+    """The name of the project's program that a block's token runs (build/bin/NAME, or
+    ../../bin/NAME from a folder of the build), None for any other token."""
+    if token.startswith("build/bin/") or token.startswith("../../bin/"):
+        return os.path.basename(token)
+    return None
+
+
 def check_shell(block, args, failures):
     where = block.where()
     parsed = subprocess.run(["bash", "-n"], input=block.text, capture_output=True, text=True)
@@ -236,10 +244,11 @@ def check_shell(block, args, failures):
         for i, token in enumerate(command):
             if token == "./avs" and i + 1 < len(command) and command[i + 1] not in known:
                 problems.append(f"./avs has no command '{command[i + 1]}'")
-            if token.startswith("build/bin/") or token.startswith("../../bin/"):
-                if os.path.basename(token) in args.unbuilt:
+            built = program_of(token)
+            if built:
+                if built in args.unbuilt:
                     continue
-                program = os.path.join(args.build, "bin", os.path.basename(token))
+                program = os.path.join(args.build, "bin", built)
                 if not os.path.exists(program):
                     problems.append(f"{token} was not built")
                     continue
@@ -261,9 +270,8 @@ def check_shell(block, args, failures):
 
 def names_unbuilt(block, args):
     """A block that runs a program this build leaves out is checked instead of run."""
-    return any(os.path.basename(token) in args.unbuilt
-               for command in commands_of(block.text) for token in command
-               if token.startswith("build/bin/") or token.startswith("../../bin/"))
+    return any(program_of(token) in args.unbuilt
+               for command in commands_of(block.text) for token in command)
 
 
 def run_shell(block, args, scratch, env, failures):
