@@ -107,14 +107,19 @@ inline bool RunTimeSeries(Bench& b, int steps, const std::string& scene)
     voxelsPerStep);
 
   // One group of mappers with `lights` lights: each step's time per mapper (steps after the
-  // first), and with StageTiming on the stages' times per mapper and stage.
-  using StageTimes = std::vector<std::vector<std::vector<double>>>;
-  StageTimes stageTimes;
+  // first), and for ours with StageTiming on each stage's time per step.
+  struct Played
+  {
+    std::vector<std::vector<double>> Steps;               ///< [mapper][step]
+    std::vector<std::vector<std::vector<double>>> Stages; ///< [mapper][stage][step]
+  };
   auto play = [&](int lights,
                 const std::vector<vtkVolumeMapper*>& mappers,
                 const std::vector<vtkVolumeProperty*>& properties)
   {
-    stageTimes.assign(
+    Played played;
+    played.Steps.resize(mappers.size());
+    played.Stages.assign(
       mappers.size(), std::vector<std::vector<double>>(vtkAVSVolumeMapper::NumberOfRenderStages));
     b.SetLights(lights);
     std::vector<vtkSmartPointer<vtkVolume>> volumes;
@@ -125,7 +130,6 @@ inline bool RunTimeSeries(Bench& b, int steps, const std::string& scene)
       volumes.back()->SetProperty(properties[m]);
       b.Renderer->AddVolume(volumes.back());
     }
-    std::vector<std::vector<double>> times(mappers.size());
     std::vector<int> uploadsBefore;
     for (vtkVolumeMapper* m : mappers)
     {
@@ -143,10 +147,11 @@ inline bool RunTimeSeries(Bench& b, int steps, const std::string& scene)
         auto* mine = vtkAVSVolumeMapper::SafeDownCast(mappers[m]);
         if (step > 0)
         {
-          times[m].push_back(t);
-          for (int stage = 0; mine && stage < vtkAVSVolumeMapper::NumberOfRenderStages; ++stage)
+          played.Steps[m].push_back(t);
+          const bool timed = mine && mine->GetStageTiming();
+          for (int stage = 0; timed && stage < vtkAVSVolumeMapper::NumberOfRenderStages; ++stage)
           {
-            stageTimes[m][static_cast<std::size_t>(stage)].push_back(
+            played.Stages[m][static_cast<std::size_t>(stage)].push_back(
               mine->GetLastStageSeconds(stage));
           }
         }
@@ -160,7 +165,7 @@ inline bool RunTimeSeries(Bench& b, int steps, const std::string& scene)
       uploadedEveryStep =
         uploadedEveryStep && (!mine || mine->GetNumberOfDataUploads() - uploadsBefore[m] == steps);
     }
-    return times;
+    return played;
   };
   auto medianRatio = [](const std::vector<double>& over, const std::vector<double>& under)
   {
@@ -186,7 +191,7 @@ inline bool RunTimeSeries(Bench& b, int steps, const std::string& scene)
   {
     std::printf("bench %s %.4f s\n",
       name(std::string("timestep_") + oneNames[m]).c_str(),
-      Median(one[static_cast<std::size_t>(m)]));
+      Median(one.Steps[static_cast<std::size_t>(m)]));
   }
   auto vtkShaded4 = vtkMapper();
   auto as4 = scattering(false), asx4 = scattering(true);
@@ -196,34 +201,38 @@ inline bool RunTimeSeries(Bench& b, int steps, const std::string& scene)
   {
     std::printf("bench %s %.4f s\n",
       name(std::string("timestep_") + fourNames[m]).c_str(),
-      Median(four[static_cast<std::size_t>(m)]));
+      Median(four.Steps[static_cast<std::size_t>(m)]));
   }
-  std::printf(
-    "ratio %s %.3f\n", name("timestep_ea_over_vtk_ea").c_str(), medianRatio(one[2], one[0]));
-  std::printf(
-    "ratio %s %.3f\n", name("timestep_as_over_vtk_shaded").c_str(), medianRatio(one[3], one[1]));
-  std::printf(
-    "ratio %s %.3f\n", name("timestep_asx_over_vtk_shaded").c_str(), medianRatio(one[4], one[1]));
-  std::printf(
-    "ratio %s %.3f\n", name("timestep_as4_over_vtk_shaded").c_str(), medianRatio(four[1], four[0]));
+  std::printf("ratio %s %.3f\n",
+    name("timestep_ea_over_vtk_ea").c_str(),
+    medianRatio(one.Steps[2], one.Steps[0]));
+  std::printf("ratio %s %.3f\n",
+    name("timestep_as_over_vtk_shaded").c_str(),
+    medianRatio(one.Steps[3], one.Steps[1]));
+  std::printf("ratio %s %.3f\n",
+    name("timestep_asx_over_vtk_shaded").c_str(),
+    medianRatio(one.Steps[4], one.Steps[1]));
+  std::printf("ratio %s %.3f\n",
+    name("timestep_as4_over_vtk_shaded").c_str(),
+    medianRatio(four.Steps[1], four.Steps[0]));
   std::printf("ratio %s %.3f\n",
     name("timestep_asx4_over_vtk_shaded").c_str(),
-    medianRatio(four[2], four[0]));
+    medianRatio(four.Steps[2], four.Steps[0]));
 
   // The breakdown: our mappers again, each stage timed (the GPU finished after each).
   auto breakdown = [&](int lights,
                      const std::vector<vtkAVSVolumeMapper*>& mappers,
                      const std::vector<std::string>& names)
   {
-    std::vector<vtkVolumeMapper*> played;
+    std::vector<vtkVolumeMapper*> timed;
     std::vector<vtkVolumeProperty*> properties;
     for (vtkAVSVolumeMapper* m : mappers)
     {
       m->StageTimingOn();
-      played.push_back(m);
+      timed.push_back(m);
       properties.push_back(b.Property);
     }
-    const auto steps = play(lights, played, properties);
+    const Played played = play(lights, timed, properties);
     for (std::size_t m = 0; m < mappers.size(); ++m)
     {
       mappers[m]->StageTimingOff();
@@ -232,10 +241,10 @@ inline bool RunTimeSeries(Bench& b, int steps, const std::string& scene)
         std::printf("bench %s %.4f s\n",
           name("timestep_stage_" + names[m] + "_" + vtkAVSVolumeMapper::GetRenderStageName(stage))
             .c_str(),
-          Median(stageTimes[m][static_cast<std::size_t>(stage)]));
+          Median(played.Stages[m][static_cast<std::size_t>(stage)]));
       }
       std::printf(
-        "bench %s %.4f s\n", name("timestep_timed_" + names[m]).c_str(), Median(steps[m]));
+        "bench %s %.4f s\n", name("timestep_timed_" + names[m]).c_str(), Median(played.Steps[m]));
     }
   };
   std::printf("# the steps' breakdown: each stage's median, the GPU finished after each "
