@@ -17,7 +17,10 @@
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkDataObjectTree.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -31,6 +34,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <string>
 
 vtkCxxSetObjectMacro(vtkAVSVolumeMapper, MaskInput, vtkImageData);
 
@@ -48,7 +52,31 @@ vtkAVSVolumeMapper::~vtkAVSVolumeMapper()
 
 double* vtkAVSVolumeMapper::GetBounds()
 {
-  double* bounds = this->Superclass::GetBounds();
+  double* bounds = nullptr;
+  vtkDataObject* given = this->GetInputDataObject(0, 0);
+  if (vtkDataObjectTree::SafeDownCast(given))
+  {
+    // The merged image's (the superclass knows vtkDataSet inputs only).
+    if (vtkAlgorithm* producer = this->GetInputAlgorithm())
+    {
+      producer->Update();
+    }
+    std::string error; // (reported by the render)
+    vtkImageData* image = this->Internal->CompositeInput.Resolve(given, error);
+    if (image && image->GetNumberOfPoints() > 0)
+    {
+      image->GetBounds(this->Bounds);
+    }
+    else
+    {
+      vtkMath::UninitializeBounds(this->Bounds);
+    }
+    bounds = this->Bounds;
+  }
+  else
+  {
+    bounds = this->Superclass::GetBounds();
+  }
   if (bounds)
   {
     for (int i = 0; i < 6; ++i)
@@ -60,6 +88,40 @@ double* vtkAVSVolumeMapper::GetBounds()
     }
   }
   return bounds;
+}
+
+void vtkAVSVolumeMapper::SetInputData(vtkDataObjectTree* input)
+{
+  this->SetInputDataInternal(0, input);
+}
+
+vtkDataSet* vtkAVSVolumeMapper::GetInput()
+{
+  return this->GetInput(0);
+}
+
+vtkDataSet* vtkAVSVolumeMapper::GetInput(int port)
+{
+  if (port == 0 && this->GetNumberOfInputConnections(0) > 0)
+  {
+    vtkDataObject* given = this->GetInputDataObject(0, 0);
+    if (vtkDataObjectTree::SafeDownCast(given))
+    {
+      std::string error; // (reported by the render)
+      return this->Internal->CompositeInput.Resolve(given, error);
+    }
+  }
+  return this->Superclass::GetInput(port);
+}
+
+int vtkAVSVolumeMapper::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (!this->Superclass::FillInputPortInformation(port, info))
+  {
+    return 0;
+  }
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObjectTree");
+  return 1;
 }
 
 void vtkAVSVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)

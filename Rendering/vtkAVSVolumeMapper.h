@@ -13,6 +13,15 @@
  * own mappers do. The camera may be inside the volume; perspective and parallel projections,
  * window resizes and several render windows work.
  *
+ * Composite inputs: a vtkMultiBlockDataSet, vtkPartitionedDataSet or
+ * vtkPartitionedDataSetCollection whose non-empty leaves are vtkImageData pieces of one grid
+ * (the same spacing and direction; extents, or origins that differ by whole voxels, on one
+ * lattice; together filling a box) is drawn as the one image they make: their arrays are copied
+ * into one image (kept while no block changes; one block is used as it is), so light and shadows
+ * cross the blocks as if the volume had never been split. Blocks that are not images, of
+ * other spacings (AMR levels) or that leave part of their box empty are an error naming them.
+ * Across processes each process's blocks make its piece (see WholeExtent).
+ *
  * Precomputed volumes (averaged extinction, light volumes, ambient occlusion) are rebuilt only
  * when their inputs change: a camera move only re-renders, a light move rebuilds that light's
  * volume, a change of data, transfer function or medium parameters rebuilds what depends on it.
@@ -73,6 +82,7 @@ struct ScatteringParameters;
 }
 struct vtkAVSPrecomputeInputs;
 
+class vtkDataObjectTree;
 class vtkFloatArray;
 class vtkImageData;
 class vtkMatrix4x4;
@@ -508,6 +518,23 @@ public:
   using vtkVolumeMapper::GetBounds;
 
   /**
+   * Sets a composite input: a vtkMultiBlockDataSet, vtkPartitionedDataSet or
+   * vtkPartitionedDataSetCollection of vtkImageData pieces of one grid (see the class
+   * documentation). vtkImageData inputs go through vtkVolumeMapper's SetInputData.
+   */
+  void SetInputData(vtkDataObjectTree* input);
+  using vtkVolumeMapper::SetInputData;
+
+  ///@{
+  /**
+   * The image drawn: the input image, or for a composite input the image its blocks make (see
+   * the class documentation; nullptr where they cannot be merged).
+   */
+  vtkDataSet* GetInput() override;
+  vtkDataSet* GetInput(int port) override;
+  ///@}
+
+  /**
    * Frees the GL resources of `window`.
    */
   void ReleaseGraphicsResources(vtkWindow* window) override;
@@ -515,6 +542,9 @@ public:
 protected:
   vtkAVSVolumeMapper();
   ~vtkAVSVolumeMapper() override;
+
+  /// Port 0 takes a vtkImageData or a vtkDataObjectTree of image blocks.
+  int FillInputPortInformation(int port, vtkInformation* info) override;
 
   /// 0: emission–absorption, 1: ambient occlusion, 2: ambient scattering.
   virtual int GetEffect() const = 0;

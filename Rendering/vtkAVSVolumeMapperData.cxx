@@ -91,24 +91,31 @@ vtkImageData* vtkAVSVolumeMapper::PrepareInput()
   {
     producer->Update();
   }
-  vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
+  vtkImageData* input = in.CompositeInput.Resolve(this->GetInputDataObject(0, 0), error);
   if (!input)
   {
     vtkDataObject* given = this->GetInputDataObject(0, 0);
-    if (vtkDataSet* other = this->GetInput())
+    if (!error.empty())
+    {
+      // (A vtkMultiBlockDataSet, vtkPartitionedDataSet, ... whose leaves are not pieces of one
+      // image.)
+      vtkErrorMacro("Cannot render the " << given->GetClassName() << ": " << error << ".");
+    }
+    else if (vtkDataSet::SafeDownCast(given))
     {
       vtkErrorMacro("Cannot render: no input image data (the input is a "
-        << other->GetClassName()
+        << given->GetClassName()
         << "; these mappers take vtkImageData: resample it, e.g. with vtkResampleToImage).");
     }
     else if (vtkCompositeDataSet::SafeDownCast(given))
     {
-      // (vtkMultiBlockDataSet, vtkPartitionedDataSet, ...: several pieces in one process.)
+      // (vtkOverlappingAMR, vtkNonOverlappingAMR: composites that are not trees.)
       vtkErrorMacro("Cannot render: the input is a "
         << given->GetClassName()
-        << ", a composite dataset; these mappers take one vtkImageData (composite inputs are not "
-           "supported yet: append the image blocks into one image, e.g. with vtkImageAppend, "
-           "or give each block a volume of its own).");
+        << ", a composite dataset that is not a tree of image blocks; these mappers take a "
+           "vtkImageData or a vtkMultiBlockDataSet, vtkPartitionedDataSet or "
+           "vtkPartitionedDataSetCollection of vtkImageData pieces of one grid (resample it "
+           "onto one grid, e.g. with vtkResampleToImage).");
     }
     else
     {

@@ -22,6 +22,7 @@
 #include "Lights.h"
 #include "ReferenceRenderer.h"
 #include "ScatteringParameters.h"
+#include "vtkAVSCompositeInput.h"
 #include "vtkAVSDataTranslator.h"
 #include "vtkAVSRayCaster.h"
 #include "vtkAVSRenderPasses.h"
@@ -44,6 +45,9 @@ struct vtkAVSVolumeMapper::Internals
   vtkAVSRayCaster RayCaster;
 
   // ---- The scene (vtkAVSVolumeMapperData.cxx) ----
+  /// A composite input's image blocks merged into the image drawn (kept while they do not
+  /// change).
+  vtkAVSCompositeInput CompositeInput;
   // What the uploaded data came from: the image, the selected array and the selection.
   vtkImageData* DataObject = nullptr;
   vtkMTimeType DataTime = 0;

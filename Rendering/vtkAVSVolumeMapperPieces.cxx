@@ -114,7 +114,8 @@ void vtkAVSVolumeMapper::UpdatePieceLighting(vtkVolume* volume)
   {
     producer->Update();
   }
-  vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
+  std::string ignored; // (reported by the render)
+  vtkImageData* input = in.CompositeInput.Resolve(this->GetInputDataObject(0, 0), ignored);
   bool piece = this->GetEffect() == 2 && volume && input && input->GetNumberOfPoints() > 0 &&
     this->PrepareScene(volume) && this->LitAsPiece;
   const avs::GridGeometry& g = in.Scene.Scalars.Geometry;

@@ -31,6 +31,10 @@ def main(plugin, out, kind):
     pv.LoadPlugin(plugin, remote=True, ns=globals())
     ranks = sm.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
     wavelet = pv.Wavelet(WholeExtent=EXTENT)
+    if kind == "scattering-blocks":
+        halves = [pv.ExtractSubset(Input=wavelet, VOI=[x0, x1] + EXTENT[2:])
+                  for x0, x1 in ((EXTENT[0], 0), (0, EXTENT[1]))]
+        wavelet = pv.GroupDatasets(Input=halves)
     view = pv.CreateView("RenderView")
     view.ViewSize = SIZE
     view.OrientationAxesVisibility = 0

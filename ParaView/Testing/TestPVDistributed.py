@@ -1,9 +1,11 @@
 """The light crosses the MPI ranks' pieces.
 
-Renders DistributedScene.py with pvbatch on 1 rank and with `mpirun -np 2 pvbatch` on 2, and
-checks that the 2-rank picture of the "Ambient Scattering" representation agrees with the
-1-rank one (PSNR >= 35 dB), and that with LightAcrossRanks off (each rank lights its piece
-alone) it does not (< 35 dB: the scene's shadow crosses the boundary, so the check can fail).
+Renders DistributedScene.py with pvbatch on 1 rank and with `mpirun -np N pvbatch` on 2 and 4,
+and checks that the 2-rank picture of the "Ambient Scattering" representation agrees with the
+1-rank one (PSNR >= 35 dB), the 4-rank one too (>= 45 dB), and that with LightAcrossRanks off
+(each rank lights its piece alone) they do not (< 35 dB: the scene's shadow crosses the
+boundary, so the check can fail). The wavelet as two image blocks per rank (a composite
+dataset) on 1, 2 and 4 ranks agrees with the image on 1 rank (>= 45 dB).
 A close view of one piece, where the other rank's renderer culls the volume, renders on 2
 ranks (no rank waits for another: each run has a time limit) and agrees with 1 rank.
 Prints the same comparison for ParaView's own volume representation, plain and with its
@@ -61,6 +63,21 @@ def main(pvbatch, mpirun, plugin, out):
     zoomed = t.psnr(near, near2)
     checks.check(zoomed >= 35.0, "with one rank's piece out of view, 2 ranks agree with 1: %.1f dB"
                  % zoomed)
+    # Four ranks, and the wavelet as two image blocks per rank (a composite dataset) on 1, 2 and
+    # 4 ranks: the same picture as the image on 1 rank.
+    four = render(pvbatch, mpirun, plugin, out, "scattering", 4)
+    across4 = t.psnr(one, four)
+    checks.check(across4 >= 45.0, "4 ranks agree with 1 rank: %.1f dB (largest difference %d/255)"
+                 % (across4, t.largest_difference(one, four)))
+    alone4 = render(pvbatch, mpirun, plugin, out, "scattering-per-rank", 4)
+    apart4 = t.psnr(one, alone4)
+    checks.check(apart4 < 35.0, "4 ranks each lit alone differ from 1 rank: %.1f dB" % apart4)
+    for ranks in (1, 2, 4):
+        blocks = render(pvbatch, mpirun, plugin, out, "scattering-blocks", ranks)
+        agree = t.psnr(one, blocks)
+        checks.check(agree >= 45.0, "two image blocks per rank on %d rank(s) agree with the image on"
+                     " 1 rank: %.1f dB (largest difference %d/255)"
+                     % (ranks, agree, t.largest_difference(one, blocks)))
     for kind in ("volume", "volume-scattering"):
         a = render(pvbatch, mpirun, plugin, out, kind, 1)
         b = render(pvbatch, mpirun, plugin, out, kind, 2)

@@ -14,7 +14,6 @@
 #include "vtkEmissionAbsorptionVolumeMapper.h"
 #include "vtkFloatArray.h"
 #include "vtkLightCollection.h"
-#include "vtkMultiBlockDataSet.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRectilinearGrid.h"
@@ -521,24 +520,6 @@ int main(int argc, char* argv[])
         AVS_CHECK(errors->LastError.find("the input is a vtkRectilinearGrid") != std::string::npos);
         AVS_CHECK(Brightness(picture) == 0.0);
         AVS_CHECK(mapper->GetNumberOfRenderedFrames() == frames);
-      }
-      // Image blocks in a composite dataset (not supported yet): an error naming it, nothing
-      // drawn. (VTK's pipeline reports first that the mapper cannot take it.)
-      {
-        vtkNew<vtkMultiBlockDataSet> blocks;
-        blocks->SetBlock(0, MakeTestVolume(8));
-        vtkNew<vtkTrivialProducer> producer;
-        producer->SetOutput(blocks);
-        errors->Clear();
-        mapper->SetInputConnection(producer->GetOutputPort());
-        const int frames = mapper->GetNumberOfRenderedFrames();
-        const auto picture = scene.Render();
-        AVS_CHECK(errors->Errors > 0);
-        AVS_CHECK(errors->LastError.find("the input is a vtkMultiBlockDataSet, a composite") !=
-          std::string::npos);
-        AVS_CHECK(Brightness(picture) == 0.0);
-        AVS_CHECK(mapper->GetNumberOfRenderedFrames() == frames);
-        mapper->SetInputConnection(nullptr);
       }
       auto noScalars = MakeTestVolume(8);
       noScalars->GetPointData()->RemoveArray(0);

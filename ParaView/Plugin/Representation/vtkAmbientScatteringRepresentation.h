@@ -19,6 +19,12 @@
  * ParaView's own Shade, Ambient, Diffuse, Specular and SpecularPower set the vtkVolumeProperty,
  * with which ambient scattering shades surfaces inside the medium; its Volumetric Scattering
  * Blending (SetVolumetricScatteringBlending) reaches the ambient-scattering mapper too.
+ *
+ * Composite inputs (vtkMultiBlockDataSet, vtkPartitionedDataSet, vtkPartitionedDataSetCollection
+ * of image blocks: several pieces per rank) reach the mappers as a vtkPartitionedDataSet of the
+ * rank's leaves, which they draw as the one image the leaves make (vtkAVSVolumeMapper). Under MPI
+ * the whole extent is then the union of every rank's blocks' extents (their extents must place
+ * them in one index space, as ParaView's readers and filters give them).
  */
 #ifndef vtkAmbientScatteringRepresentation_h
 #define vtkAmbientScatteringRepresentation_h
@@ -229,14 +235,29 @@ protected:
   vtkAmbientScatteringRepresentation();
   ~vtkAmbientScatteringRepresentation() override;
 
+  /// Composite inputs (any vtkDataObjectTree): a vtkPartitionedDataSet of the leaves for the
+  /// mappers (the superclass gives those to vtkMultiBlockVolumeMapper only, without the leaves
+  /// that are not images); the rest is the superclass's.
+  int RequestData(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
   std::array<vtkAVSVolumeMapper*, 3> Mappers();
   /// The superclass's, then the whole extent and the controller of distributed lighting.
   void UpdateMapperParameters() override;
-  /// The mappers' WholeExtent and Controller: the pipeline's whole extent and the global
-  /// controller under MPI with LightAcrossRanks on, none otherwise.
+  /// The mappers' WholeExtent and Controller: the pipeline's whole extent (for a composite
+  /// input, the ranks' blocks' union, CompositeWholeExtent) and the global controller under MPI
+  /// with LightAcrossRanks on, none otherwise.
   void ShareLightAcrossRanks();
+  /// Under MPI with LightAcrossRanks on, in the render request: the union of the ranks'
+  /// BlocksExtent (a collective of every rank; empty where no rank has a composite input).
+  void UniteBlockExtents();
 
   vtkTypeBool LightAcrossRanks = 1;
+  /// A composite input's blocks' extent on this rank (RequestData; empty: none) and the union
+  /// over the ranks (UniteBlockExtents).
+  int BlocksExtent[6] = { 0, -1, 0, -1, 0, -1 };
+  int CompositeWholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
 
   int LightingModel = AmbientScattering;
   vtkNew<vtkEmissionAbsorptionVolumeMapper> EmissionAbsorptionMapper;
