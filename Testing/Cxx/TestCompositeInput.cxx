@@ -314,9 +314,7 @@ int main(int, char*[])
       nothing->SetBlock(0, vtkNew<vtkImageData>());
       expectError(nothing, "empty");
 
-      vtkNew<vtkOverlappingAMR> amr;
-      const int levels[1] = { 1 };
-      amr->Initialize(1, levels);
+      vtkNew<vtkOverlappingAMR> amr; // (VTK's pipeline says first that the mapper cannot take it)
       expectError(amr, "not a tree of image blocks");
     }
     mapper->SetInputData(static_cast<vtkImageData*>(nullptr));
