@@ -15,8 +15,9 @@
  * What is refused, with a message naming it: a leaf that is not a vtkImageData (polygons,
  * rectilinear or unstructured grids), leaves of other spacings or directions (AMR levels) or
  * off the first leaf's lattice, leaves that leave part of their box empty, a box of more than
- * 2^30 points. Composite datasets that are not trees
- * (vtkOverlappingAMR, vtkNonOverlappingAMR) are not accepted by the mappers' input port.
+ * 2^30 points. Composite datasets that are not trees (vtkOverlappingAMR and
+ * vtkNonOverlappingAMR before VTK 9.5; trees since, whose levels' spacings then differ) are not
+ * accepted by the mappers' input port.
  */
 #ifndef vtkAVSCompositeInput_h
 #define vtkAVSCompositeInput_h

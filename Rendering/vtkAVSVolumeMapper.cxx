@@ -579,6 +579,9 @@ void vtkAVSVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << (this->WholeExtent[0] > this->WholeExtent[1] ? " (the input is the whole)" : "") << "\n";
   os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "LitAsPiece: " << (this->LitAsPiece ? "yes" : "no") << "\n";
+  os << indent << "LastPieceLightingCalls: " << this->LastPieceLightingCalls << "\n";
+  os << indent << "LastPieceLightingBytes: " << this->LastPieceLightingBytes << "\n";
+  os << indent << "LastPieceLightingSeconds: " << this->LastPieceLightingSeconds << "\n";
   // What of vtkVolumeMapper's settings (printed above) this mapper honours.
   const int planes = this->ClippingPlanes ? this->ClippingPlanes->GetNumberOfItems() : 0;
   os << indent << "ClippingPlanes honoured: " << planes << " plane(s), at most "

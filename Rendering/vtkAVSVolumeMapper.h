@@ -391,6 +391,19 @@ public:
    */
   void UpdatePieceLighting(vtkVolume* volume);
 
+  ///@{
+  /**
+   * What the last UpdatePieceLighting communicated: the collective calls it made on the
+   * Controller and the bytes this process gave them (its send buffers: 8 for the call that asks
+   * whether anything changed, 24 for its box, 4 per light-grid point for its share), and how
+   * long it took (seconds, waiting for the other processes included). 0 without a controller of
+   * several processes.
+   */
+  vtkGetMacro(LastPieceLightingCalls, int);
+  vtkGetMacro(LastPieceLightingBytes, double);
+  vtkGetMacro(LastPieceLightingSeconds, double);
+  ///@}
+
   /**
    * Whether the last frame lit its input as a piece of a larger whole (see WholeExtent).
    */
@@ -587,6 +600,9 @@ protected:
   int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
   vtkMultiProcessController* Controller = nullptr;
   vtkTypeBool LitAsPiece = 0;
+  int LastPieceLightingCalls = 0;
+  double LastPieceLightingBytes = 0.0;
+  double LastPieceLightingSeconds = 0.0;
   int MaximumGPUMemory = 0;
   int Partitions[3] = { 1, 1, 1 };
   vtkTypeBool PathTracedRefinement = 0; ///< ambient scattering only
@@ -648,6 +664,8 @@ private:
   /// whole on `lightGrid` for the render (the sum UpdatePieceLighting made; one process: its
   /// share alone), without communicating.
   bool ResolvePiece(vtkImageData* input, std::string& error);
+  /// UpdatePieceLighting's work (it times it and counts what it sends).
+  void ShareAcrossPieces(vtkVolume* volume);
   bool AverageAcrossPieces(const avs::GridGeometry& lightGrid,
     avs::Grid& averaged,
     std::string& error);

@@ -9,6 +9,7 @@
 #include "vtkMultiProcessController.h"
 
 #include <algorithm>
+#include <chrono>
 #include <sstream>
 #include <string>
 
@@ -99,6 +100,17 @@ bool vtkAVSVolumeMapper::AverageAcrossPieces(const avs::GridGeometry& lightGrid,
 
 void vtkAVSVolumeMapper::UpdatePieceLighting(vtkVolume* volume)
 {
+  const auto start = std::chrono::steady_clock::now();
+  this->LastPieceLightingCalls = 0;
+  this->LastPieceLightingBytes = 0.0;
+  this->LastPieceLightingSeconds = 0.0;
+  this->ShareAcrossPieces(volume);
+  this->LastPieceLightingSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void vtkAVSVolumeMapper::ShareAcrossPieces(vtkVolume* volume)
+{
   auto& in = *this->Internal;
   vtkMultiProcessController* controller = this->Controller;
   if (!controller || controller->GetNumberOfProcesses() < 2)
@@ -150,6 +162,8 @@ void vtkAVSVolumeMapper::UpdatePieceLighting(vtkVolume* volume)
   const int mine[2] = { key != in.ShareKey ? 1 : 0, static_cast<int>(points) };
   int all[2] = { 0, 0 };
   controller->AllReduce(mine, all, 2, vtkCommunicator::MAX_OP);
+  this->LastPieceLightingCalls = 1;
+  this->LastPieceLightingBytes = sizeof(mine);
   in.ShareKey = key;
   if (!all[0])
   {
@@ -160,6 +174,8 @@ void vtkAVSVolumeMapper::UpdatePieceLighting(vtkVolume* volume)
   const int processes = controller->GetNumberOfProcesses();
   std::vector<int> boxes(6 * static_cast<std::size_t>(processes));
   controller->AllGather(box.data(), boxes.data(), 6);
+  this->LastPieceLightingCalls += 1;
+  this->LastPieceLightingBytes += 6 * sizeof(int);
   std::vector<avs::IndexBox> earlier;
   for (int r = 0; r < controller->GetLocalProcessId(); ++r)
   {
@@ -189,15 +205,21 @@ void vtkAVSVolumeMapper::UpdatePieceLighting(vtkVolume* volume)
       << points << " points here, " << length
       << " elsewhere): every process needs the same WholeExtent and LightVolumeMaximumDimension.");
   }
-  std::vector<float> send(length, 0.0f), sum(length, 0.0f);
-  if (piece && agree)
+  // This process's share is sent as it is (zeros where it has none): the share and the sum are
+  // the light grids a process holds.
+  std::vector<float> zeros, sum(length, 0.0f);
+  const float* send = in.Share.Values.data();
+  if (!piece || !agree)
   {
-    send = in.Share.Values;
+    zeros.assign(length, 0.0f);
+    send = zeros.data();
   }
   if (length > 0)
   {
     controller->AllReduce(
-      send.data(), sum.data(), static_cast<vtkIdType>(length), vtkCommunicator::SUM_OP);
+      send, sum.data(), static_cast<vtkIdType>(length), vtkCommunicator::SUM_OP);
+    this->LastPieceLightingCalls += 1;
+    this->LastPieceLightingBytes += static_cast<double>(length) * sizeof(float);
   }
   // A new sum (or none: rendering then reports it) rebuilds what depends on it.
   ++in.SumVersion;
