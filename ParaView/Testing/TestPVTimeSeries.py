@@ -7,7 +7,13 @@ checks: every step draws the volume; the moving series' steps differ from one an
 pictures follow the data); going back to the first step gives its picture again, bit for bit;
 the static series gives the same picture at every step, bit for bit (nothing flickers); and on 2
 ranks every step agrees with 1 rank (PSNR >= 35 dB: the light crosses the ranks' pieces, as in
-TestPVDistributed.py).
+TestPVDistributed.py). Then the display across ranks: the moving series lit by a dim spot light
+with Auto Exposure on (which brightens it; the exposure metered from the light over the whole
+image, the same on every rank, where each piece's own would differ; the tone
+curve applied on each rank before IceT composites) on 2 and 4 ranks agrees with 1 rank at every
+step (>= 35 dB) and shows no seam where the pieces meet: on those pixels (the pieces' inner
+faces projected by the scene's camera) it departs from the 1-rank picture by at most SEAM/255 on
+average, where each rank lit alone departs more than twice as far (so the measure sees a seam).
 
 usage: AVS_PARAVIEW_PYTHONPATH=... python3 TestPVTimeSeries.py PVBATCH MPIRUN PLUGIN OUTPUT_DIR
 """
@@ -19,12 +25,21 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import avs_pvtesting as t  # noqa: E402
 
+from vtkmodules.vtkCommonExecutionModel import vtkExtentTranslator  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLImageDataWriter  # noqa: E402
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource  # noqa: E402
+from vtkmodules.vtkRenderingCore import vtkRenderWindow, vtkRenderer  # noqa: E402
+import vtkmodules.vtkRenderingOpenGL2  # noqa: E402,F401
 
 SCENE = os.path.join(HERE, "TimeSeriesScene.py")
 STEPS = 5
 EXTENT = [-20, 20, -20, 20, -20, 20]
+# TimeSeriesScene.py's picture size and camera.
+SIZE = [160, 160]
+CAMERA = dict(position=[90.0, 45.0, 75.0], focal_point=[0.0, 0.0, 0.0], view_up=[0.0, 0.0, 1.0],
+              view_angle=30.0)
+# The largest mean difference from the 1-rank picture where the pieces meet (of 255).
+SEAM = 3.0
 
 
 def write_series(folder, moving):
@@ -44,9 +59,62 @@ def write_series(folder, moving):
     return files
 
 
-def play(pvbatch, mpirun, plugin, files, prefix, ranks):
+def boundary_pixels(ranks):
+    """The pixels where the ranks' pieces meet, as TimeSeriesScene.py's camera sees them: the
+    pieces as ParaView splits the image (VTK's vtkExtentTranslator, block mode), the planes of
+    their inner faces sampled inside the image's box and projected."""
+    translator = vtkExtentTranslator()
+    planes = set()
+    for rank in range(ranks):
+        extent = [0] * 6
+        translator.PieceToExtentThreadSafe(rank, ranks, 0, EXTENT, extent,
+                                           vtkExtentTranslator.BLOCK_MODE, 0)
+        for axis in range(3):
+            if extent[2 * axis] > EXTENT[2 * axis]:
+                planes.add((axis, extent[2 * axis]))
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(True)
+    window.SetSize(*SIZE)
+    renderer = vtkRenderer()
+    window.AddRenderer(renderer)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(*CAMERA["position"])
+    camera.SetFocalPoint(*CAMERA["focal_point"])
+    camera.SetViewUp(*CAMERA["view_up"])
+    camera.SetViewAngle(CAMERA["view_angle"])
+    pixels = set()
+    n = 81
+    for axis, value in planes:
+        for i in range(n):
+            for j in range(n):
+                u = EXTENT[0] + (EXTENT[1] - EXTENT[0]) * i / (n - 1.0)
+                v = EXTENT[0] + (EXTENT[1] - EXTENT[0]) * j / (n - 1.0)
+                point = [u, v]
+                point.insert(axis, float(value))
+                renderer.SetWorldPoint(point + [1.0])
+                renderer.WorldToDisplay()
+                x, y, _ = renderer.GetDisplayPoint()
+                if 0 <= x < SIZE[0] and 0 <= y < SIZE[1]:
+                    pixels.add((int(x), int(y)))
+    return sorted(pixels)
+
+
+def seam(picture, truth, pixels):
+    """Mean difference (of 255) between a picture and the 1-rank one on the pixels where the
+    pieces meet (those lit in the 1-rank picture): a seam is a band that departs from it there."""
+    total, count = 0, 0
+    for x, y in pixels:
+        i = 3 * (y * SIZE[0] + x)
+        if max(truth[i:i + 3]) > 8:
+            total += sum(abs(picture[i + c] - truth[i + c]) for c in range(3)) / 3.0
+            count += 1
+    return total / max(count, 1)
+
+
+def play(pvbatch, mpirun, plugin, files, prefix, ranks, options=()):
     """Runs the scene; returns the steps' pictures and the first step's again."""
-    command = [pvbatch, "--force-offscreen-rendering", SCENE, plugin, prefix] + files
+    command = [pvbatch, "--force-offscreen-rendering", SCENE, plugin, prefix] + list(options) \
+        + files
     if ranks > 1:
         command = [mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] + command
     environment = dict(os.environ, PYTHONPATH=os.environ["AVS_PARAVIEW_PYTHONPATH"])
@@ -88,6 +156,29 @@ def main(pvbatch, mpirun, plugin, out):
                      "difference %d/255)" % (k + 1, d, t.largest_difference(one[k], two[k])))
     checks.check(two_again == two[0], "2 ranks: the first step again gives its picture, bit for "
                  "bit (largest difference %d/255)" % t.largest_difference(two_again, two[0]))
+    # The display across ranks: Auto Exposure on (every rank meters the whole, so every rank
+    # exposes the same) and the tone curve applied before IceT composites; 2 and 4 ranks against
+    # 1, and no seam where the pieces meet (against 4 ranks each lit alone, whose seam shows).
+    # A dim spot light: what each rank would meter of its own piece differs.
+    auto = ["--auto-exposure", "--spot"]
+    one_auto, _ = play(pvbatch, mpirun, plugin, moving, os.path.join(out, "auto_1"), 1, auto)
+    one_spot, _ = play(pvbatch, mpirun, plugin, moving, os.path.join(out, "spot_1"), 1, ["--spot"])
+    brighter = sum(one_auto[0]) / max(sum(one_spot[0]), 1)
+    checks.check(brighter > 1.2, "Auto Exposure brightens the dim spot light's picture %.2fx"
+                 % brighter)
+    for ranks in (2, 4):
+        pixels = boundary_pixels(ranks)
+        many, _ = play(pvbatch, mpirun, plugin, moving, os.path.join(out, "auto_%d" % ranks),
+                       ranks, auto)
+        alone, _ = play(pvbatch, mpirun, plugin, moving,
+                        os.path.join(out, "auto_alone_%d" % ranks), ranks, auto + ["--per-rank"])
+        for k in range(STEPS):
+            d = t.psnr(one_auto[k], many[k])
+            on, off = seam(many[k], one_auto[k], pixels), seam(alone[k], one_auto[k], pixels)
+            checks.check(d >= 35.0 and on <= SEAM and off > 2.0 * on and off > SEAM,
+                         "Auto Exposure on %d ranks, step %d: %.1f dB against 1 rank; where the "
+                         "pieces meet (%d pixels) %.2f/255 from 1 rank's picture (each rank lit "
+                         "alone: %.2f)" % (ranks, k + 1, d, len(pixels), on, off))
     checks.finish()
 
 
