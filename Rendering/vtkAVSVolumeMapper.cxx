@@ -107,8 +107,17 @@ vtkDataSet* vtkAVSVolumeMapper::GetInput(int port)
     vtkDataObject* given = this->GetInputDataObject(0, 0);
     if (vtkDataObjectTree::SafeDownCast(given))
     {
-      std::string error; // (reported by the render)
-      return this->Internal->CompositeInput.Resolve(given, error);
+      // Reported here too, once per failure: a caller that checks the input before rendering
+      // (ParaView's vtkPVLODVolume) then never renders, and the render's report never comes.
+      auto& in = *this->Internal;
+      std::string error;
+      vtkImageData* image = in.CompositeInput.Resolve(given, error);
+      if (!image && !error.empty() && error != in.ReportedCompositeError)
+      {
+        vtkErrorMacro("Cannot render the " << given->GetClassName() << ": " << error << ".");
+      }
+      in.ReportedCompositeError = error;
+      return image;
     }
   }
   return this->Superclass::GetInput(port);

@@ -38,6 +38,7 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 struct vtkAVSVolumeMapper::Internals
@@ -48,6 +49,7 @@ struct vtkAVSVolumeMapper::Internals
   /// A composite input's image blocks merged into the image drawn (kept while they do not
   /// change).
   vtkAVSCompositeInput CompositeInput;
+  std::string ReportedCompositeError; ///< what GetInput last reported of it
   // What the uploaded data came from: the image, the selected array and the selection.
   vtkImageData* DataObject = nullptr;
   vtkMTimeType DataTime = 0;

@@ -32,8 +32,8 @@ def main(plugin, out, kind):
     ranks = sm.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
     wavelet = pv.Wavelet(WholeExtent=EXTENT)
     if kind == "scattering-blocks":
-        halves = [pv.ExtractSubset(Input=wavelet, VOI=[x0, x1] + EXTENT[2:])
-                  for x0, x1 in ((EXTENT[0], 0), (0, EXTENT[1]))]
+        halves = [pv.ExtractSubset(Input=wavelet, VOI=EXTENT[:4] + [z0, z1])
+                  for z0, z1 in ((EXTENT[4], 0), (0, EXTENT[5]))]
         wavelet = pv.GroupDatasets(Input=halves)
     view = pv.CreateView("RenderView")
     view.ViewSize = SIZE

@@ -291,6 +291,12 @@ int main(int, char*[])
       expectError(gap,
         "image blocks leave 3375 points of the extent they span, (-16, 15, -16, "
         "15, -16, 15), empty");
+      // GetInput (what ParaView asks before rendering) reports it too, once.
+      errors->Clear();
+      AVS_CHECK(mapper->GetInput() == nullptr);
+      AVS_CHECK(errors->Errors == 1 && errors->LastError.find("3375 points") != std::string::npos);
+      AVS_CHECK(mapper->GetInput() == nullptr);
+      AVS_CHECK(errors->Errors == 1);
 
       vtkNew<vtkMultiBlockDataSet> spacing; // an AMR-like finer block
       spacing->SetBlock(0, blocks[0]);

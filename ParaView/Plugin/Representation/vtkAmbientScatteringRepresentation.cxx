@@ -28,14 +28,15 @@ vtkStandardNewMacro(vtkAmbientScatteringRepresentation);
 namespace
 {
 // The points of `image` that its cells without the ghost flag span (the cells from the first
-// to the last that are not ghosts: a block's ghost cells are layers around it).
-void CropGhostCells(vtkImageData* image)
+// to the last that are not ghosts: a block's ghost cells are layers around it); false where every
+// cell is a ghost (the block is another rank's data: left out).
+bool CropGhostCells(vtkImageData* image)
 {
   auto* ghosts = vtkUnsignedCharArray::SafeDownCast(
     image->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
   if (!ghosts)
   {
-    return;
+    return true;
   }
   int points[6];
   image->GetExtent(points);
@@ -51,7 +52,7 @@ void CropGhostCells(vtkImageData* image)
   }
   if (first >= n)
   {
-    return; // nothing but ghosts: left as it is
+    return false;
   }
   int low[3], high[3];
   vtkStructuredData::ComputeCellStructuredCoordsForExtent(first, points, low);
@@ -63,6 +64,7 @@ void CropGhostCells(vtkImageData* image)
     crop[2 * a + 1] = std::min(high[a] + 1, points[2 * a + 1]);
   }
   image->Crop(crop);
+  return true;
 }
 } // namespace
 
@@ -330,10 +332,10 @@ int vtkAmbientScatteringRepresentation::RequestData(vtkInformation* request,
     {
       vtkNew<vtkImageData> copy; // (the separate opacity array is added to the copy)
       copy->ShallowCopy(image);
-      if (copy->HasAnyGhostCells())
+      // As the superclass does for an image: pieces that do not overlap across ranks.
+      if (copy->HasAnyGhostCells() && !CropGhostCells(copy))
       {
-        // As the superclass does for an image: pieces that do not overlap across ranks.
-        CropGhostCells(copy);
+        continue;
       }
       if (this->UseSeparateOpacityArray)
       {
