@@ -4,6 +4,7 @@
 #include "PathTracer.h"
 #include "ReferenceRenderer.h"
 #include "vtkAVSClipTranslator.h"
+#include "vtkAVSCompositeInput.h"
 #include "vtkAVSDataTranslator.h"
 #include "vtkAVSPropertyTranslator.h"
 #include "vtkAVSSceneTranslator.h"
@@ -12,6 +13,7 @@
 
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
+#include "vtkDataObjectTree.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -141,7 +143,9 @@ vtkMTimeType vtkVolumeReferenceRenderer::GetMTime()
 
 int vtkVolumeReferenceRenderer::FillInputPortInformation(int, vtkInformation* info)
 {
+  // An image, or a tree of image blocks as the mappers take it (vtkAVSCompositeInput).
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObjectTree");
   return 1;
 }
 
@@ -167,7 +171,7 @@ int vtkVolumeReferenceRenderer::RequestUpdateExtent(vtkInformation*,
 {
   // The whole volume is needed whatever part of the picture is asked for.
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  if (inInfo)
+  if (inInfo && inInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
   {
     inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
       inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()),
@@ -180,12 +184,24 @@ int vtkVolumeReferenceRenderer::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkImageData* input = vtkImageData::GetData(inputVector[0]);
   vtkImageData* output = vtkImageData::GetData(outputVector);
   output->Initialize();
 
   avs::VolumeScene scene;
   std::string error, warning;
+  // A tree of image blocks: the image they make (as the mappers draw it).
+  vtkSmartPointer<vtkImageData> merged;
+  vtkImageData* input = vtkImageData::GetData(inputVector[0]);
+  if (auto* tree = vtkDataObjectTree::GetData(inputVector[0]))
+  {
+    merged = vtkAVSCompositeInput::Merge(tree, error);
+    if (!merged)
+    {
+      vtkErrorMacro("Cannot render the " << tree->GetClassName() << ": " << error << ".");
+      return 1;
+    }
+    input = merged;
+  }
   vtkAVSDataTranslator::Selection selection;
   selection.ScalarMode = this->ScalarMode;
   selection.ArrayAccessMode = this->ArrayAccessMode;

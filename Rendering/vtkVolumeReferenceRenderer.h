@@ -3,7 +3,9 @@
  * @brief   renders image data with the CPU reference ray caster into an image
  *
  * An image algorithm: its input is the volume (vtkImageData with point or cell scalars of any
- * type, the array selected as on the mappers), its output a picture of it as a renderer's camera
+ * type, the array selected as on the mappers; or a vtkMultiBlockDataSet, vtkPartitionedDataSet or
+ * vtkPartitionedDataSetCollection of image blocks of one grid, merged into the image they make as
+ * the mappers merge them), its output a picture of it as a renderer's camera
  * and lights see it. It runs the project's double-precision reference ray caster (ALGORITHM.md
  * sections 2-7): emission–absorption, volumetric ambient occlusion or ambient volume scattering; or
  * it path-traces the same scene without approximation (PATH_TRACING). The GPU mappers are measured

@@ -4,7 +4,8 @@
 // as the image itself: light crosses the blocks), point and cell data, blocks that share their
 // faces or not, blocks placed by extent or by origin, a block changed in place; and what cannot
 // be drawn (an error naming it, nothing drawn): a gap, another spacing, a block off the grid, a
-// block that is not an image, an AMR dataset.
+// block that is not an image, an AMR dataset. The CPU reference (vtkVolumeReferenceRenderer) takes
+// the same trees.
 #include "MapperTestScene.h"
 #include "TestErrorObserver.h"
 
@@ -13,6 +14,7 @@
 #include "vtkCellData.h"
 #include "vtkDataObjectTree.h"
 #include "vtkEmissionAbsorptionVolumeMapper.h"
+#include "vtkFloatArray.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkOverlappingAMR.h"
 #include "vtkPartitionedDataSet.h"
@@ -20,7 +22,10 @@
 #include "vtkPolyData.h"
 #include "vtkShortArray.h"
 #include "vtkTrivialProducer.h"
+#include "vtkVolumeReferenceRenderer.h"
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <iostream>
 #include <string>
@@ -327,6 +332,54 @@ int main(int, char*[])
         amr, vtkDataObjectTree::SafeDownCast(amr) ? "empty" : "not a tree of image blocks");
     }
     mapper->SetInputData(static_cast<vtkImageData*>(nullptr));
+  }
+
+  // The CPU reference takes the same trees: the same radiance as from the image itself, and the
+  // same refusal of a gap.
+  {
+    vtkNew<vtkRenderer> renderer;
+    AddTestLights(renderer);
+    PlaceTestCamera(renderer->GetActiveCamera());
+    vtkNew<vtkVolumeReferenceRenderer> reference;
+    vtkNew<TestErrorObserver> errors;
+    reference->AddObserver(vtkCommand::ErrorEvent, errors);
+    reference->SetVolumeProperty(MakeTestProperty());
+    reference->SetRenderer(renderer);
+    reference->SetImageSize(24, 24);
+    reference->SetInputData(whole);
+    reference->Update();
+    vtkNew<vtkFloatArray> expected;
+    expected->DeepCopy(reference->GetOutput()->GetPointData()->GetArray("Radiance"));
+    auto blocks = Blocks(whole, false);
+    vtkNew<vtkPartitionedDataSet> partitions;
+    for (std::size_t i = 0; i < blocks.size(); ++i)
+    {
+      partitions->SetPartition(static_cast<unsigned int>(i), blocks[i]);
+    }
+    reference->SetInputData(partitions);
+    reference->Update();
+    vtkDataArray* radiance = reference->GetOutput()->GetPointData()->GetArray("Radiance");
+    AVS_CHECK(errors->Errors == 0 && radiance &&
+      radiance->GetNumberOfValues() == expected->GetNumberOfValues());
+    double largest = 0.0, sum = 0.0;
+    for (vtkIdType v = 0; radiance && v < radiance->GetNumberOfValues(); ++v)
+    {
+      largest = std::max(
+        largest, std::abs(radiance->GetVariantValue(v).ToDouble() - expected->GetValue(v)));
+      sum += expected->GetValue(v);
+    }
+    std::cout << "vtkVolumeReferenceRenderer, vtkPartitionedDataSet: largest radiance difference "
+              << largest << " (radiance sum " << sum << ")\n";
+    AVS_CHECK(sum > 0.0 && largest == 0.0);
+    vtkNew<vtkMultiBlockDataSet> gap;
+    for (unsigned int i = 0; i < 7; ++i)
+    {
+      gap->SetBlock(i, blocks[i]);
+    }
+    reference->SetInputData(gap);
+    reference->Update();
+    AVS_CHECK(
+      errors->Errors == 1 && errors->LastError.find("image blocks leave") != std::string::npos);
   }
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
