@@ -28,19 +28,29 @@ struct Leaf
   unsigned int Index = 0; // its place among the leaves, for messages
 };
 
-// The leaves of `tree` (empty ones skipped), in the tree's order; false where one is not an
-// image.
-bool CollectLeaves(vtkDataObjectTree* tree, std::vector<Leaf>& leaves, std::string& error)
+// The leaves of `tree` that hold a data object, in the tree's order.
+std::vector<vtkDataObject*> LeavesOf(vtkDataObjectTree* tree)
 {
+  std::vector<vtkDataObject*> leaves;
   vtkSmartPointer<vtkDataObjectTreeIterator> it;
   it.TakeReference(tree->NewTreeIterator());
   it->VisitOnlyLeavesOn();
   it->TraverseSubTreeOn();
   it->SkipEmptyNodesOn();
-  unsigned int index = 0;
-  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem(), ++index)
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
   {
-    vtkDataObject* block = it->GetCurrentDataObject();
+    leaves.push_back(it->GetCurrentDataObject());
+  }
+  return leaves;
+}
+
+// The leaves of `tree` (empty images skipped), in the tree's order; false where one is not an
+// image.
+bool CollectLeaves(vtkDataObjectTree* tree, std::vector<Leaf>& leaves, std::string& error)
+{
+  unsigned int index = 0;
+  for (vtkDataObject* block : LeavesOf(tree))
+  {
     auto* image = vtkImageData::SafeDownCast(block);
     if (!image)
     {
@@ -56,6 +66,7 @@ bool CollectLeaves(vtkDataObjectTree* tree, std::vector<Leaf>& leaves, std::stri
       image->GetExtent(leaf.Extent);
       leaves.push_back(leaf);
     }
+    ++index;
   }
   return true;
 }
@@ -366,17 +377,9 @@ vtkImageData* vtkAVSCompositeInput::Resolve(vtkDataObject* input, std::string& e
     return nullptr;
   }
   std::vector<std::pair<vtkDataObject*, vtkMTimeType>> key{ { tree, tree->GetMTime() } };
+  for (vtkDataObject* leaf : LeavesOf(tree))
   {
-    vtkSmartPointer<vtkDataObjectTreeIterator> it;
-    it.TakeReference(tree->NewTreeIterator());
-    it->VisitOnlyLeavesOn();
-    it->TraverseSubTreeOn();
-    it->SkipEmptyNodesOn();
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      vtkDataObject* leaf = it->GetCurrentDataObject();
-      key.emplace_back(leaf, leaf->GetMTime());
-    }
+    key.emplace_back(leaf, leaf->GetMTime());
   }
   if (key != this->Key)
   {
