@@ -13,7 +13,8 @@ image, the same on every rank, where each piece's own would differ; the tone
 curve applied on each rank before IceT composites) on 2 and 4 ranks agrees with 1 rank at every
 step (>= 35 dB) and shows no seam where the pieces meet: on those pixels (the pieces' inner
 faces projected by the scene's camera) it departs from the 1-rank picture by at most SEAM/255 on
-average, where each rank lit alone departs more than twice as far (so the measure sees a seam).
+average, where (on 4 ranks) each rank lit alone departs more than twice as far (so the measure
+sees a seam).
 
 usage: AVS_PARAVIEW_PYTHONPATH=... python3 TestPVTimeSeries.py PVBATCH MPIRUN PLUGIN OUTPUT_DIR
 """
@@ -166,19 +167,26 @@ def main(pvbatch, mpirun, plugin, out):
     brighter = sum(one_auto[0]) / max(sum(one_spot[0]), 1)
     checks.check(brighter > 1.2, "Auto Exposure brightens the dim spot light's picture %.2fx"
                  % brighter)
+    # (Each rank lit alone on 4 ranks only: that the measure sees a seam needs showing once.)
     for ranks in (2, 4):
         pixels = boundary_pixels(ranks)
         many, _ = play(pvbatch, mpirun, plugin, moving, os.path.join(out, "auto_%d" % ranks),
                        ranks, auto)
-        alone, _ = play(pvbatch, mpirun, plugin, moving,
-                        os.path.join(out, "auto_alone_%d" % ranks), ranks, auto + ["--per-rank"])
+        alone = None
+        if ranks == 4:
+            alone, _ = play(pvbatch, mpirun, plugin, moving,
+                            os.path.join(out, "auto_alone_%d" % ranks), ranks,
+                            auto + ["--per-rank"])
         for k in range(STEPS):
             d = t.psnr(one_auto[k], many[k])
-            on, off = seam(many[k], one_auto[k], pixels), seam(alone[k], one_auto[k], pixels)
-            checks.check(d >= 35.0 and on <= SEAM and off > 2.0 * on and off > SEAM,
+            on = seam(many[k], one_auto[k], pixels)
+            off = seam(alone[k], one_auto[k], pixels) if alone else None
+            contrast = off is None or (off > 2.0 * on and off > SEAM)
+            checks.check(d >= 35.0 and on <= SEAM and contrast,
                          "Auto Exposure on %d ranks, step %d: %.1f dB against 1 rank; where the "
-                         "pieces meet (%d pixels) %.2f/255 from 1 rank's picture (each rank lit "
-                         "alone: %.2f)" % (ranks, k + 1, d, len(pixels), on, off))
+                         "pieces meet (%d pixels) %.2f/255 from 1 rank's picture%s"
+                         % (ranks, k + 1, d, len(pixels), on,
+                            "" if off is None else " (each rank lit alone: %.2f)" % off))
     checks.finish()
 
 
