@@ -17,6 +17,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
+#include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 #include "vtkWindowToImageFilter.h"
 
@@ -172,6 +173,30 @@ inline int MaximumDifference(vtkImageData* a, vtkImageData* b)
       most = std::max(most, std::abs(x->GetComponent(i, c) - y->GetComponent(i, c)));
   return static_cast<int>(most);
 }
+
+/// A window of `size` x `size` pixels with the test lights and camera, showing `mapper`'s
+/// volume with the test property (the test sets the mapper's input).
+struct TestScene
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkVolume> Volume;
+  explicit TestScene(vtkVolumeMapper* mapper, int size = 96)
+  {
+    PrepareTestWindow(this->Window, size, size);
+    this->Window->AddRenderer(this->Renderer);
+    AddTestLights(this->Renderer);
+    PlaceTestCamera(this->Renderer->GetActiveCamera());
+    this->Volume->SetMapper(mapper);
+    this->Volume->SetProperty(MakeTestProperty());
+    this->Renderer->AddVolume(this->Volume);
+  }
+  vtkSmartPointer<vtkImageData> Render()
+  {
+    this->Window->Render();
+    return Grab(this->Window);
+  }
+};
 
 /// Sum of the RGB values (to tell a picture from a blank one).
 inline double Brightness(vtkImageData* a)

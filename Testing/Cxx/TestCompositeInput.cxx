@@ -33,27 +33,6 @@
 
 namespace
 {
-struct Scene
-{
-  vtkNew<vtkRenderWindow> Window;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkVolume> Volume;
-  explicit Scene(vtkAVSVolumeMapper* mapper)
-  {
-    PrepareTestWindow(this->Window, 64, 64);
-    this->Window->AddRenderer(this->Renderer);
-    AddTestLights(this->Renderer);
-    PlaceTestCamera(this->Renderer->GetActiveCamera());
-    this->Volume->SetMapper(mapper);
-    this->Volume->SetProperty(MakeTestProperty());
-    this->Renderer->AddVolume(this->Volume);
-  }
-  vtkSmartPointer<vtkImageData> Render()
-  {
-    this->Window->Render();
-    return Grab(this->Window);
-  }
-};
 
 // The part of `whole` on `extent` (a copy).
 vtkSmartPointer<vtkImageData> Piece(vtkImageData* whole, const std::vector<int>& extent)
@@ -135,7 +114,7 @@ int main(int, char*[])
   {
     const std::string name = mapper->GetClassName();
     const bool lit = mapper != ea.Get();
-    Scene scene(mapper);
+    TestScene scene(mapper, 64);
     vtkNew<TestErrorObserver> errors;
     mapper->AddObserver(vtkCommand::ErrorEvent, errors);
     mapper->SetInputData(whole);

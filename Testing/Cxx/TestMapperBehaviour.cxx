@@ -31,27 +31,6 @@
 
 namespace
 {
-struct Scene
-{
-  vtkNew<vtkRenderWindow> Window;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkVolume> Volume;
-  Scene(vtkAVSVolumeMapper* mapper, int size = 96)
-  {
-    PrepareTestWindow(this->Window, size, size);
-    this->Window->AddRenderer(this->Renderer);
-    AddTestLights(this->Renderer);
-    PlaceTestCamera(this->Renderer->GetActiveCamera());
-    this->Volume->SetMapper(mapper);
-    this->Volume->SetProperty(MakeTestProperty());
-    this->Renderer->AddVolume(this->Volume);
-  }
-  vtkSmartPointer<vtkImageData> Render()
-  {
-    this->Window->Render();
-    return Grab(this->Window);
-  }
-};
 
 vtkLight* LightAt(vtkRenderer* renderer, int index)
 {
@@ -78,7 +57,7 @@ int main(int argc, char* argv[])
     mapper->SetScatteringModelToPaper();
     ShowLinear(mapper.Get()); // the models' radiance, not the display's compression of it
     mapper->SetInputData(data);
-    Scene scene(mapper);
+    TestScene scene(mapper);
     scene.Render();
     AVS_CHECK(mapper->GetNumberOfDataUploads() == 1);
     AVS_CHECK(mapper->GetNumberOfExtinctionRebuilds() == 1);
@@ -245,8 +224,8 @@ int main(int argc, char* argv[])
       m->SetInputData(data);
       m->UseJitteringOff();
     }
-    Scene a(onGPU, 96);
-    Scene b(onCPU, 96);
+    TestScene a(onGPU, 96);
+    TestScene b(onCPU, 96);
     for (int step = 0; step < 2; ++step)
     {
       const auto pa = a.Render();
@@ -270,7 +249,7 @@ int main(int argc, char* argv[])
     vtkNew<vtkAmbientScatteringVolumeMapper> slabs;
     slabs->SetInputData(data);
     slabs->UseJitteringOff();
-    Scene c(slabs, 96);
+    TestScene c(slabs, 96);
     c.Volume->SetPosition(a.Volume->GetPosition());
     LightAt(c.Renderer, 1)->SetPosition(-0.2, 0.3, 0.1);
     setenv("AVS_AVERAGING_SLAB_BYTES", "12288", 1);
@@ -318,8 +297,8 @@ int main(int argc, char* argv[])
       m->SetInputData(data);
       m->UseJitteringOff();
     }
-    Scene a(shippedTable, 96);
-    Scene b(longAxis, 96);
+    TestScene a(shippedTable, 96);
+    TestScene b(longAxis, 96);
     const auto pa = a.Render();
     const auto pb = b.Render();
     std::cout << "80 tau nodes: light volumes on the GPU: "
@@ -342,8 +321,8 @@ int main(int argc, char* argv[])
       m->UseJitteringOff();
       m->SetOcclusionRadius(0.2);
     }
-    Scene a(onGPU, 96);
-    Scene b(onCPU, 96);
+    TestScene a(onGPU, 96);
+    TestScene b(onCPU, 96);
     const auto pa = a.Render();
     const auto pb = b.Render();
     AVS_CHECK(onCPU->GetOcclusionOnGPU() == 0);
@@ -358,7 +337,7 @@ int main(int argc, char* argv[])
   {
     vtkNew<vtkAmbientOcclusionVolumeMapper> mapper;
     mapper->SetInputData(data);
-    Scene scene(mapper);
+    TestScene scene(mapper);
     scene.Render();
     scene.Renderer->GetActiveCamera()->Azimuth(40);
     scene.Render();
@@ -398,7 +377,7 @@ int main(int argc, char* argv[])
     vtkNew<vtkEmissionAbsorptionVolumeMapper> mapper;
     mapper->SetInputData(data);
     mapper->UseJitteringOff();
-    Scene scene(mapper, 96);
+    TestScene scene(mapper, 96);
     const auto volumeOnly = scene.Render();
     // A red ball between the camera and the volume hides the volume where it is drawn.
     vtkNew<vtkSphereSource> ball;
@@ -424,7 +403,7 @@ int main(int argc, char* argv[])
       volumeOnly->GetScalarComponentAsDouble(10, 10, 0, 1));
     // The same with a multisampled window (VTK's default): its depth is resolved for the rays.
     {
-      Scene msaa(mapper, 96);
+      TestScene msaa(mapper, 96);
       msaa.Window->SetMultiSamples(4);
       msaa.Volume->SetProperty(scene.Volume->GetProperty());
       msaa.Renderer->AddActor(actor);
@@ -447,7 +426,7 @@ int main(int argc, char* argv[])
     AVS_CHECK(std::abs(g - volumeOnly->GetScalarComponentAsDouble(48, 48, 0, 1)) > 2.0);
 
     // A second window with the same mapper, then back to the first.
-    Scene other(mapper, 64);
+    TestScene other(mapper, 64);
     other.Volume->SetProperty(scene.Volume->GetProperty());
     const auto second = other.Render();
     AVS_CHECK(Brightness(second) > 1000.0);
@@ -471,7 +450,7 @@ int main(int argc, char* argv[])
     vtkNew<vtkEmissionAbsorptionVolumeMapper> ea;
     vtkNew<vtkAmbientOcclusionVolumeMapper> ao;
     vtkNew<vtkAmbientScatteringVolumeMapper> as;
-    Scene scene(ea, 48);
+    TestScene scene(ea, 48);
     for (vtkAVSVolumeMapper* mapper : { static_cast<vtkAVSVolumeMapper*>(ea),
            static_cast<vtkAVSVolumeMapper*>(ao),
            static_cast<vtkAVSVolumeMapper*>(as) })
