@@ -24,24 +24,30 @@ double vtkAVSAveragedExtinctionPass::SlabBytes()
 unsigned int vtkAVSAveragedExtinctionPass::Build(const vtkAVSClassification::Layout& layout)
 {
   const std::string defines = layout.Defines();
-  if (this->Program && this->Defines == defines)
+  if (this->Program[0] && this->Program[1] && this->Defines == defines)
   {
-    return this->Program;
+    return this->Program[0];
   }
-  if (this->Program)
-  {
-    glDeleteProgram(this->Program);
-    this->Program = 0;
-  }
-  this->Program = vtkAVSShaderAssembly::BuildComputeProgram(
+  this->ReleaseGraphicsResources(true);
+  this->Program[0] = vtkAVSShaderAssembly::BuildComputeProgram(
+    vtkAVSShaderAssembly::AveragedExtinctionShader(defines + "#define AVS_AVERAGE_CLASSIFY\n")
+      .c_str(),
+    "averaged-extinction");
+  this->Program[1] = vtkAVSShaderAssembly::BuildComputeProgram(
     vtkAVSShaderAssembly::AveragedExtinctionShader(defines).c_str(), "averaged-extinction");
-  this->Defines = this->Program ? defines : std::string();
-  return this->Program;
+  if (!this->Program[0] || !this->Program[1])
+  {
+    this->ReleaseGraphicsResources(true);
+    return 0;
+  }
+  this->Defines = defines;
+  return this->Program[0];
 }
 
 void vtkAVSAveragedExtinctionPass::ReleaseGraphicsResources(bool context)
 {
-  vtkAVSShaderAssembly::ReleaseComputeProgram(this->Program, context);
+  vtkAVSShaderAssembly::ReleaseComputeProgram(this->Program[0], context);
+  vtkAVSShaderAssembly::ReleaseComputeProgram(this->Program[1], context);
   this->Defines.clear();
 }
 
@@ -57,11 +63,13 @@ bool vtkAVSAveragedExtinctionPass::Begin(vtkAVSVolumeTextures& textures,
     error = "the averaged-extinction compute shader did not compile (see the log above)";
     return false;
   }
-  const GLuint program = this->Program;
   vtkAVSRenderPasses::DiscardErrors(); // the check at the end is of this pass alone
   textures.Window->GetShaderCache()->ReleaseCurrentShader();
+  glUseProgram(this->Program[1]);
+  glUniform1f(
+    glGetUniformLocation(this->Program[1], "u_inverseCount"), static_cast<float>(inverseCount));
+  const GLuint program = this->Program[0];
   glUseProgram(program);
-  glUniform1f(glGetUniformLocation(program, "u_inverseCount"), static_cast<float>(inverseCount));
   vtkAVSVolumeTextures::SetVolumeFilter(textures.Scalars, layout.Nearest);
   textures.Scalars->Activate();
   glUniform1i(glGetUniformLocation(program, "u_scalars"), textures.Scalars->GetTextureUnit());
@@ -78,7 +86,8 @@ void vtkAVSAveragedExtinctionPass::Dispatch(int pass,
   int halfWidth,
   int targetLength)
 {
-  const GLuint program = this->Program;
+  const GLuint program = this->Program[pass == 1 ? 0 : 1];
+  glUseProgram(program);
   auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
   glBindImageTexture(0, input ? input->GetHandle() : 0, 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
   glBindImageTexture(1, output->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);

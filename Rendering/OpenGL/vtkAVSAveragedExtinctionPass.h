@@ -35,8 +35,9 @@ public:
   vtkAVSAveragedExtinctionPass(const vtkAVSAveragedExtinctionPass&) = delete;
   vtkAVSAveragedExtinctionPass& operator=(const vtkAVSAveragedExtinctionPass&) = delete;
 
-  /// The program for a classification layout (built again when its defines change); 0 when it
-  /// does not compile.
+  /// The programs for a classification layout (built again when its defines change): pass 1's,
+  /// which classifies, and that of passes 2 and 3, which sum the pass before's grid; pass 1's
+  /// program, 0 when either does not compile.
   unsigned int Build(const vtkAVSClassification::Layout& layout);
   /// Runs the passes (the caller checked for compute shaders, scalars and classification).
   bool Run(vtkAVSVolumeTextures& textures,
@@ -73,7 +74,9 @@ private:
   /// Unbinds, and reports a GL error of the pass.
   bool End(vtkAVSVolumeTextures& textures, std::string& error);
 
-  unsigned int Program = 0; ///< GL name of the averaged-extinction compute program
+  /// GL names of the averaged-extinction compute programs: pass 1's (classifying), passes 2 and
+  /// 3's.
+  unsigned int Program[2] = { 0, 0 };
   /// Classification and packing defines it was built with.
   std::string Defines;
 };

@@ -103,19 +103,26 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   const std::string defines = "#define AVS_NUMBER_OF_LIGHTS " + std::to_string(n) +
     "\n#define AVS_POSITIONAL_LIGHTS " + std::to_string(positional) + "\n" +
     (spot ? "#define AVS_SPOT_LIGHTS\n" : "");
-  if (!this->Program || defines != this->ProgramDefines)
+  if (!this->Programs[0] || defines != this->ProgramDefines)
   {
-    vtkAVSShaderAssembly::ReleaseComputeProgram(this->Program, true);
-    std::string source = avs_diffusion_cs;
-    const std::size_t line = source.find('\n') + 1; // after #version
-    source.insert(line, defines + avs_lights + "\n");
-    this->Program = vtkAVSShaderAssembly::BuildComputeProgram(source.c_str(), "diffusion");
-    this->ProgramDefines = this->Program ? defines : std::string();
-    if (!this->Program)
+    this->ProgramDefines.clear();
+    for (int stage = 0; stage < 3; ++stage)
     {
-      error = "the diffusion compute shader did not build";
-      return false;
+      vtkAVSShaderAssembly::ReleaseComputeProgram(this->Programs[stage], true);
+      std::string source = avs_diffusion_cs;
+      const std::size_t line = source.find('\n') + 1; // after #version
+      source.insert(line,
+        "#define AVS_DIFFUSION_STAGE " + std::to_string(stage) + "\n" + defines + avs_lights +
+          "\n");
+      this->Programs[stage] =
+        vtkAVSShaderAssembly::BuildComputeProgram(source.c_str(), "diffusion");
+      if (!this->Programs[stage])
+      {
+        error = "the diffusion compute shader did not build";
+        return false;
+      }
     }
+    this->ProgramDefines = defines;
   }
   // The nested solve's levels (DiffusionLevels), finest first: the finest is the texture the
   // ray caster reads, the coarser ones are held with their sources for the next solve.
@@ -144,11 +151,15 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   }
   this->Dimensions = lightDimensions;
 
-  const GLuint program = this->Program;
   vtkAVSRenderPasses::DiscardErrors();
   window->GetShaderCache()->ReleaseCurrentShader();
-  glUseProgram(program);
-  auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
+  GLuint program = 0;
+  auto location = [&program](const char* name) { return glGetUniformLocation(program, name); };
+  auto use = [&program](GLuint which)
+  {
+    program = which;
+    glUseProgram(program);
+  };
   // Lights in the data's local frame (a rigid map of the data's frame: distances and cones
   // stay).
   float position[8][3] = {}, axis[8][3] = {}, irradiance[8][3] = {}, attenuation[8][3] = {};
@@ -170,34 +181,39 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
     const avs::TubeLaw law = avs::TubeLawFor(true, l.Type);
     weight[j] = static_cast<float>(avs::DiffusionSourceWeight(law, p.Albedo, p.Anisotropy));
   }
-  glUniform3fv(location("u_lightPosition"), 8, &position[0][0]);
-  glUniform3fv(location("u_lightAxis"), 8, &axis[0][0]);
-  glUniform3fv(location("u_lightIrradiance"), 8, &irradiance[0][0]);
-  glUniform3fv(location("u_lightAttenuation"), 8, &attenuation[0][0]);
-  glUniform1fv(location("u_lightConeCos"), 8, coneCos);
-  glUniform1fv(location("u_lightExponent"), 8, exponent);
-  glUniform1fv(location("u_sourceWeight"), 8, weight);
-  glUniform3f(location("u_lightDimensions"),
-    static_cast<float>(lightDimensions[0]),
-    static_cast<float>(lightDimensions[1]),
-    static_cast<float>(lightDimensions[2]));
-  glUniform1f(location("u_albedo"), static_cast<float>(p.Albedo));
-  glUniform1f(location("u_anisotropy"), static_cast<float>(p.Anisotropy));
-  glUniform1f(location("u_ambientRadius"), static_cast<float>(p.AmbientRadius));
-  glUniform1f(location("u_relaxation"), static_cast<float>(avs::DiffusionSettings().Relaxation));
-  glUniform1f(location("u_transportLimit"),
-    static_cast<float>(avs::TransportLengthLimitInRadii * p.AmbientRadius));
   averaged->Activate();
-  glUniform1i(location("u_averaged"), averaged->GetTextureUnit());
   vtkTextureObject* first = lights0 ? lights0 : averaged;
   vtkTextureObject* second = lights1 ? lights1 : first;
   first->Activate();
-  glUniform1i(location("u_lightVolumes0"), first->GetTextureUnit());
   if (second != first)
   {
     second->Activate();
   }
-  glUniform1i(location("u_lightVolumes1"), second->GetTextureUnit());
+  // What every stage reads: the lights, the model's parameters and the textures.
+  for (const GLuint stage : this->Programs)
+  {
+    use(stage);
+    glUniform3fv(location("u_lightPosition"), 8, &position[0][0]);
+    glUniform3fv(location("u_lightAxis"), 8, &axis[0][0]);
+    glUniform3fv(location("u_lightIrradiance"), 8, &irradiance[0][0]);
+    glUniform3fv(location("u_lightAttenuation"), 8, &attenuation[0][0]);
+    glUniform1fv(location("u_lightConeCos"), 8, coneCos);
+    glUniform1fv(location("u_lightExponent"), 8, exponent);
+    glUniform1fv(location("u_sourceWeight"), 8, weight);
+    glUniform3f(location("u_lightDimensions"),
+      static_cast<float>(lightDimensions[0]),
+      static_cast<float>(lightDimensions[1]),
+      static_cast<float>(lightDimensions[2]));
+    glUniform1f(location("u_albedo"), static_cast<float>(p.Albedo));
+    glUniform1f(location("u_anisotropy"), static_cast<float>(p.Anisotropy));
+    glUniform1f(location("u_ambientRadius"), static_cast<float>(p.AmbientRadius));
+    glUniform1f(location("u_relaxation"), static_cast<float>(avs::DiffusionSettings().Relaxation));
+    glUniform1f(location("u_transportLimit"),
+      static_cast<float>(avs::TransportLengthLimitInRadii * p.AmbientRadius));
+    glUniform1i(location("u_averaged"), averaged->GetTextureUnit());
+    glUniform1i(location("u_lightVolumes0"), first->GetTextureUnit());
+    glUniform1i(location("u_lightVolumes1"), second->GetTextureUnit());
+  }
   // Coarsest level first; each starts from the coarser one's phi (the shader's Coarser), with
   // DiffusionCoarseIterations sweeps, the finest with DiffusionIterations.
   for (std::size_t l = levels.size(); l-- > 0;)
@@ -207,27 +223,31 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
     vtkTextureObject* phi = this->LevelFluence(l);
     vtkTextureObject* q = this->LevelSource(l);
     vtkTextureObject* coarser = l + 1 < levels.size() ? this->LevelFluence(l + 1).Get() : phi;
-    glUniform3i(location("u_dimensions"), n[0], n[1], n[2]);
-    glUniform3f(location("u_spacing"),
-      static_cast<float>(level.Spacing.x),
-      static_cast<float>(level.Spacing.y),
-      static_cast<float>(level.Spacing.z));
-    glUniform1f(location("u_vacuum"),
-      static_cast<float>(
-        avs::VacuumOpticalDepth * 3.0 / (level.Spacing.x + level.Spacing.y + level.Spacing.z)));
-    glUniform1i(location("u_hasCoarser"), l + 1 < levels.size() ? 1 : 0);
-    const std::array<int, 3> c = l + 1 < levels.size() ? levels[l + 1].Dimensions : n;
-    glUniform3i(location("u_coarserDimensions"), c[0], c[1], c[2]);
+    // The level's grid, for its source (stage 0) and its sweeps (stage 1).
+    for (int stage = 1; stage >= 0; --stage)
+    {
+      use(this->Programs[stage]);
+      glUniform3i(location("u_dimensions"), n[0], n[1], n[2]);
+      glUniform3f(location("u_spacing"),
+        static_cast<float>(level.Spacing.x),
+        static_cast<float>(level.Spacing.y),
+        static_cast<float>(level.Spacing.z));
+      glUniform1f(location("u_vacuum"),
+        static_cast<float>(
+          avs::VacuumOpticalDepth * 3.0 / (level.Spacing.x + level.Spacing.y + level.Spacing.z)));
+      glUniform1i(location("u_hasCoarser"), l + 1 < levels.size() ? 1 : 0);
+      const std::array<int, 3> c = l + 1 < levels.size() ? levels[l + 1].Dimensions : n;
+      glUniform3i(location("u_coarserDimensions"), c[0], c[1], c[2]);
+    }
     glBindImageTexture(0, phi->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
     glBindImageTexture(1, q->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
     glBindImageTexture(2, coarser->GetHandle(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
     const GLuint groups[3] = { static_cast<GLuint>((n[0] + 7) / 8),
       static_cast<GLuint>((n[1] + 7) / 8),
       static_cast<GLuint>(n[2]) };
-    glUniform1i(location("u_stage"), 0);
     glDispatchCompute(groups[0], groups[1], groups[2]);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    glUniform1i(location("u_stage"), 1);
+    use(this->Programs[1]);
     // A half-sweep's invocations cover every other cell of a row (the shader's main).
     const GLuint halfRow = static_cast<GLuint>(((n[0] + 1) / 2 + 7) / 8);
     const int sweeps = l == 0 ? p.DiffusionIterations : p.DiffusionCoarseIterations;
@@ -245,7 +265,7 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   {
     const std::array<int, 3>& n = lightDimensions;
     const std::array<int, 3>& m = grid.Dimensions;
-    glUniform1i(location("u_stage"), 2);
+    use(this->Programs[2]);
     glUniform3i(location("u_dimensions"), n[0], n[1], n[2]);
     glUniform3i(location("u_coarserDimensions"), m[0], m[1], m[2]);
     glBindImageTexture(2, this->Fluence->GetHandle(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
@@ -332,7 +352,10 @@ void vtkAVSDiffuseVolume::ReleaseGraphicsResources(vtkWindow* window)
   this->Fluence = nullptr;
   this->Source = nullptr;
   // Without a window its context took the program with it: the name is only forgotten.
-  vtkAVSShaderAssembly::ReleaseComputeProgram(this->Program, window != nullptr);
+  for (unsigned int& program : this->Programs)
+  {
+    vtkAVSShaderAssembly::ReleaseComputeProgram(program, window != nullptr);
+  }
   this->ProgramDefines.clear();
   this->Dimensions = { 0, 0, 0 };
 }

@@ -97,7 +97,10 @@ private:
   {
     return l == 0 ? this->Source : this->Coarser[2 * l - 1];
   }
-  unsigned int Program = 0; ///< the GPU solve's program, for ProgramDefines
+  /// The GPU solve's programs, one per stage (source, relaxation, packing: a software
+  /// rasterizer runs every branch of a shader, so one program would pay for the three), for
+  /// ProgramDefines.
+  std::array<unsigned int, 3> Programs{ 0, 0, 0 };
   std::string ProgramDefines;
   std::array<int, 3> Dimensions{ 0, 0, 0 }; ///< the texture's (the light grid)
 };

@@ -14,25 +14,40 @@
 
 bool vtkAVSLightVolumePass::Build(int maximumTauNodes, bool software)
 {
-  this->Program = vtkAVSShaderAssembly::BuildComputeProgram(
-    vtkAVSShaderAssembly::LightVolumeShader(maximumTauNodes, software).c_str(), "light-volume");
-  return this->Program != 0;
+  const char* variants[NumberOfVariants] = {
+    "", "#define AVS_LIGHT_VOLUME_POSITIONAL\n", "#define AVS_LIGHT_VOLUME_COPY\n"
+  };
+  for (int v = 0; v < NumberOfVariants; ++v)
+  {
+    this->Programs[v] = vtkAVSShaderAssembly::BuildComputeProgram(
+      vtkAVSShaderAssembly::LightVolumeShader(maximumTauNodes, software, variants[v]).c_str(),
+      "light-volume");
+    if (!this->Programs[v])
+    {
+      this->ReleaseGraphicsResources(true);
+      return false;
+    }
+  }
+  return true;
 }
 
 void vtkAVSLightVolumePass::ReleaseGraphicsResources(bool context)
 {
-  vtkAVSShaderAssembly::ReleaseComputeProgram(this->Program, context);
+  for (unsigned int& program : this->Programs)
+  {
+    vtkAVSShaderAssembly::ReleaseComputeProgram(program, context);
+  }
 }
 
 bool vtkAVSLightVolumePass::Dispatch(vtkAVSVolumeTextures& textures,
   int slot,
-  bool copyAveraged,
+  Variant variant,
   const std::function<void(const std::function<int(const char*)>&)>& uniforms,
   const char* what,
   std::string& error)
 {
   const std::array<int, 3> d = textures.LightTextureDimensions;
-  const GLuint program = this->Program;
+  const GLuint program = this->Programs[variant];
   vtkAVSRenderPasses::DiscardErrors(); // the check at the end is of this pass alone
   // The shader cache must rebind its own program afterwards.
   textures.Window->GetShaderCache()->ReleaseCurrentShader();
@@ -48,7 +63,6 @@ bool vtkAVSLightVolumePass::Dispatch(vtkAVSVolumeTextures& textures,
     GL_READ_WRITE,
     textures.LightVolumeFormat());
   glUniform1i(location("u_channel"), slot % 4);
-  glUniform1i(location("u_copyAveraged"), copyAveraged ? 1 : 0);
   glUniform3i(location("u_targetDimensions"), d[0], d[1], d[2]);
   textures.AveragedExtinction->Activate();
   glUniform1i(location("u_averaged"), textures.AveragedExtinction->GetTextureUnit());
@@ -106,13 +120,17 @@ bool vtkAVSLightVolumePass::Run(vtkAVSVolumeTextures& textures,
     const avs::Vec3 l = positional
       ? lightGrid.WorldToLocal(light.Position)
       : lightGrid.WorldToLocalDirection(avs::Normalize(light.FocalPoint - light.Position));
-    glUniform1i(location("u_positional"), positional ? 1 : 0);
     glUniform3f(location("u_light"),
       static_cast<float>(l.x),
       static_cast<float>(l.y),
       static_cast<float>(l.z));
   };
-  return this->Dispatch(textures, index, false, uniforms, "the light-volume compute pass", error);
+  return this->Dispatch(textures,
+    index,
+    light.Type == avs::LightType::Positional ? Positional : Directional,
+    uniforms,
+    "the light-volume compute pass",
+    error);
 }
 
 bool vtkAVSLightVolumePass::CopyAveraged(vtkAVSVolumeTextures& textures,
@@ -129,7 +147,7 @@ bool vtkAVSLightVolumePass::CopyAveraged(vtkAVSVolumeTextures& textures,
   if (!this->Dispatch(
         textures,
         slot,
-        true,
+        Copy,
         [](const std::function<int(const char*)>&) {},
         "copying the averaged extinction",
         error))

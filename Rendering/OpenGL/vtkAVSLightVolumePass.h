@@ -28,7 +28,7 @@ public:
   vtkAVSLightVolumePass(const vtkAVSLightVolumePass&) = delete;
   vtkAVSLightVolumePass& operator=(const vtkAVSLightVolumePass&) = delete;
 
-  /// Builds the program for tables of up to `maximumTauNodes` tau nodes, writing the light
+  /// Builds the programs for tables of up to `maximumTauNodes` tau nodes, writing the light
   /// textures' format (vtkAVSVolumeTextures::LightVolumeFormat); false when it does not compile.
   bool Build(int maximumTauNodes, bool software);
   /// Runs the pass for light `index` (the caller checked for compute shaders, the averaged
@@ -50,17 +50,28 @@ public:
   void ReleaseGraphicsResources(bool context);
 
 private:
+  /// The programs: tube marching from a directional light, from a positional one, and the
+  /// averaged extinction's copy (one each: a software rasterizer runs every branch of a
+  /// shader, so the copy would pay for a march).
+  enum Variant
+  {
+    Directional,
+    Positional,
+    Copy,
+    NumberOfVariants
+  };
   /// The program over the light grid into slot `slot` of the packed textures (channel slot % 4
   /// of texture slot / 4): tube marching, or the averaged extinction's copy; `uniforms` sets
   /// what the pass needs beyond the target, the channel and the averaged extinction. `what`
   /// names the pass in a GL error.
   bool Dispatch(vtkAVSVolumeTextures& textures,
     int slot,
-    bool copyAveraged,
+    Variant variant,
     const std::function<void(const std::function<int(const char*)>&)>& uniforms,
     const char* what,
     std::string& error);
-  unsigned int Program = 0; ///< GL name of the light-volume compute program
+  /// GL names of the light-volume compute programs, one per Variant.
+  unsigned int Programs[NumberOfVariants] = { 0, 0, 0 };
 };
 
 #endif

@@ -206,14 +206,16 @@ std::string vtkAVSShaderAssembly::AveragedExtinctionShader(const std::string& de
   return average;
 }
 
-std::string vtkAVSShaderAssembly::LightVolumeShader(int maximumTauNodes, bool software)
+std::string vtkAVSShaderAssembly::LightVolumeShader(int maximumTauNodes,
+  bool software,
+  const std::string& variant)
 {
   // The light-volume pass keeps the table's log gain in an array of this many entries.
   std::string lightVolume = avs_lightvolume_cs;
   const std::size_t line = lightVolume.find('\n') + 1; // after #version
   lightVolume.insert(line,
     "#define AVS_MAXIMUM_TAU_NODES " + std::to_string(maximumTauNodes) + "\n" +
-      "#define AVS_LIGHT_FORMAT " + (software ? "rgba32f" : "rgba16f") + "\n");
+      "#define AVS_LIGHT_FORMAT " + (software ? "rgba32f" : "rgba16f") + "\n" + variant);
   return lightVolume;
 }
 

@@ -61,8 +61,10 @@ public:
   static std::string AveragedExtinctionShader(const std::string& defines);
   /// The light-volume compute shader (avs_lightvolume_cs.glsl) for tables of up to
   /// `maximumTauNodes` tau nodes, writing light volumes of 32-bit floats (`software`) or half
-  /// floats.
-  static std::string LightVolumeShader(int maximumTauNodes, bool software);
+  /// floats; `variant`: its defines for one kind of pass (the shader says which).
+  static std::string LightVolumeShader(int maximumTauNodes,
+    bool software,
+    const std::string& variant);
   /// Compiles and links a compute program (the context current); 0, with a warning naming
   /// `what`, when it does not compile or link.
   static unsigned int BuildComputeProgram(const char* source, const char* what);

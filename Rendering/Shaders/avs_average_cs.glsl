@@ -12,7 +12,9 @@
 // as 0; its result is what the light-volume pass and the ray caster sample. Passes 1 and 2 run
 // slab by slab along z (u_zOffset: the slab's first slice), so that pass 1's result, the
 // largest of the intermediate grids, is held for one slab at a time. The classification's
-// defines come before this.
+// defines come before this, and AVS_AVERAGE_CLASSIFY in pass 1's program: passes 2 and 3 have
+// their own without the classification, since a software rasterizer runs both sides of a
+// branch (pass 1's texture fetches cost passes 2 and 3 as much again when a uniform chose).
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(r32f, binding = 0) uniform readonly image3D u_input;
@@ -40,13 +42,13 @@ void Store(ivec3 v, double sum)
 // sigma_t at voxel v: classified from the scalars in pass 1, the previous pass's result after.
 float Input(ivec3 v)
 {
-  if (u_pass == 1)
-  {
-    ivec3 w = v + ivec3(0, 0, u_zOffset); // the voxel in the data
-    vec3 coordinate = (vec3(w) + 0.5) / vec3(textureSize(u_scalars, 0));
-    return Classify(texelFetch(u_scalars, w, 0), coordinate).a * ClipInside(vec3(w), true);
-  }
+#ifdef AVS_AVERAGE_CLASSIFY
+  ivec3 w = v + ivec3(0, 0, u_zOffset); // the voxel in the data
+  vec3 coordinate = (vec3(w) + 0.5) / vec3(textureSize(u_scalars, 0));
+  return Classify(texelFetch(u_scalars, w, 0), coordinate).a * ClipInside(vec3(w), true);
+#else
   return imageLoad(u_input, v).r;
+#endif
 }
 
 void main()

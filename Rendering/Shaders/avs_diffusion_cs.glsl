@@ -2,20 +2,22 @@
 // The extended model's diffusion solve on the GPU (Core/DiffuseFluence.cxx is the CPU version,
 // which the tests hold this one against; ARCHITECTURE.md, "Beyond the paper", has the model).
 // The diffusion grid spans the data's lattice box; positions are in the data's local frame
-// (lights too: the free irradiance depends only on distances and the cone). Two stages:
-//  u_stage 0, the source of one level of the nested solve: per cell, q = sigma~t sum_j w_j
+// (lights too: the free irradiance depends only on distances and the cone). Three stages:
+//  stage 0, the source of one level of the nested solve: per cell, q = sigma~t sum_j w_j
 //    E_j^free T_j b into u_source (T_j at the cell, the light volume r downstream; b the share
 //    beyond the ball) (rgb) with sigma_a (a), and (phi, D) into u_phi (D = 0: vacuum), from
 //    the averaged extinction and the packed light volumes on the light grid; phi starts from the
 //    coarser level's, interpolated (0 on the coarsest level and in vacuum);
-//  u_stage 1, one SOR half-sweep (dispatched over half the x range): the cells with
+//  stage 1, one SOR half-sweep (dispatched over half the x range): the cells with
 //    (i + j + k) % 2 == u_colour relax
 //    phi <- (1 - w) phi + w (q + sum_f K_f phi_f) / (sigma_a + sum_f K_f + leaks), with the
 //    harmonic-mean couplings of the CPU code and Marshak's leak towards vacuum and the border;
-//  u_stage 2, after the finest level: phi interpolated onto the light grid, with the averaged
+//  stage 2, after the finest level: phi interpolated onto the light grid, with the averaged
 //    extinction in alpha, into u_packed (what the ray caster reads).
 // The ray caster defines AVS_NUMBER_OF_LIGHTS, AVS_POSITIONAL_LIGHTS and AVS_SPOT_LIGHTS, and
-// puts avs_lights.glsl (LightAt) before this text.
+// puts avs_lights.glsl (LightAt) before this text; AVS_DIFFUSION_STAGE is the stage, a program
+// each, since a software rasterizer runs every branch of a shader (one program's sweeps would
+// pay for the source's and the packing's fetches).
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(rgba32f, binding = 0) uniform image3D u_phi;    // rgb: phi, a: D (0: vacuum)
@@ -24,7 +26,6 @@ layout(rgba32f, binding = 2) uniform readonly image3D u_coarser; // the coarser 
 layout(rgba32f, binding = 3) uniform writeonly image3D u_packed; // stage 2: (phi, sigma~t)
 uniform int u_hasCoarser;            // 0: the coarsest level (phi starts at 0)
 uniform ivec3 u_coarserDimensions;
-uniform int u_stage;
 uniform int u_colour;
 uniform ivec3 u_dimensions;      // diffusion grid
 uniform vec3 u_spacing;          // its spacing (local frame)
@@ -143,26 +144,20 @@ void Pack(ivec3 cell)
 void main()
 {
   ivec3 cell = ivec3(gl_GlobalInvocationID);
-  if (u_stage == 1)
-  {
-    // A half-sweep is dispatched over half the x range: invocation x relaxes the cell 2x or
-    // 2x + 1 of this row whose colour is u_colour, so no invocation idles beside a busy one.
-    cell.x = 2 * cell.x + ((cell.y + cell.z + u_colour) & 1);
-  }
+#if AVS_DIFFUSION_STAGE == 1
+  // A half-sweep is dispatched over half the x range: invocation x relaxes the cell 2x or
+  // 2x + 1 of this row whose colour is u_colour, so no invocation idles beside a busy one.
+  cell.x = 2 * cell.x + ((cell.y + cell.z + u_colour) & 1);
+#endif
   if (any(greaterThanEqual(cell, u_dimensions)))
   {
     return;
   }
-  if (u_stage == 0)
-  {
-    Source(cell);
-  }
-  else if (u_stage == 1)
-  {
-    Relax(cell);
-  }
-  else
-  {
-    Pack(cell);
-  }
+#if AVS_DIFFUSION_STAGE == 0
+  Source(cell);
+#elif AVS_DIFFUSION_STAGE == 1
+  Relax(cell);
+#else
+  Pack(cell);
+#endif
 }

@@ -27,11 +27,11 @@ uniform float u_radius;
 // (the extended model's positional lights; TubeLaw in LightVolume.h).
 uniform int u_directBeam;
 
-// 1: no tube marching; the averaged extinction itself is copied into channel u_channel, where
-// the ray caster reads it beside the lights' (the free channel of the last light texture).
-uniform int u_copyAveraged;
-
-uniform int u_positional;       // 0: directional, 1: positional
+// A program per kind of pass (a software rasterizer runs every branch of a shader): tube
+// marching from a directional light, from a positional one (AVS_LIGHT_VOLUME_POSITIONAL), or,
+// with AVS_LIGHT_VOLUME_COPY, no tube marching: the averaged extinction itself is copied into
+// channel u_channel, where the ray caster reads it beside the lights' (the free channel of the
+// last light texture).
 uniform vec3 u_light;           // propagation direction (directional) or position (positional)
 
 float g_tauScale = 0.0;         // (tau nodes - 1) / log(1 + tau maximum), set in main
@@ -104,24 +104,20 @@ void main()
   {
     return;
   }
-  if (u_copyAveraged != 0)
-  {
-    vec4 texel = imageLoad(u_target, voxel);
-    texel[u_channel] = texelFetch(u_averaged, voxel, 0).r;
-    imageStore(u_target, voxel, texel);
-    return;
-  }
+#ifdef AVS_LIGHT_VOLUME_COPY
+  vec4 texel = imageLoad(u_target, voxel);
+  texel[u_channel] = texelFetch(u_averaged, voxel, 0).r;
+  imageStore(u_target, voxel, texel);
+#else
   vec3 x = vec3(voxel) * u_targetSpacing;
   vec3 x0 = x;
   float t0, t1;
-  if (u_positional == 0)
+#ifndef AVS_LIGHT_VOLUME_POSITIONAL
+  if (Box(x, -u_light, t0, t1))
   {
-    if (Box(x, -u_light, t0, t1))
-    {
-      x0 = x - u_light * max(0.0, t1);
-    }
+    x0 = x - u_light * max(0.0, t1);
   }
-  else
+#else
   {
     vec3 p = u_light;
     float eps = 1e-9 * (1.0 + length(u_extent));
@@ -136,6 +132,7 @@ void main()
       x0 = p + (x - p) / dist * clamp(t0, 0.0, dist);
     }
   }
+#endif
   float D = length(x - x0);
   float T = 1.0;
   if (D > 0.0)
@@ -167,4 +164,5 @@ void main()
   vec4 value = imageLoad(u_target, voxel);
   value[u_channel] = T;
   imageStore(u_target, voxel, value);
+#endif
 }
