@@ -562,12 +562,18 @@ void EffectLeap(int from, int to)
       SurfaceShareFor(here.a);
       lagged *= VolumetricShare();
 #endif
-#if defined(AVS_SAMPLE_PAIRS) && defined(AVS_DIFFUSE) && !defined(AVS_SURFACE)
+#if defined(AVS_SAMPLE_PAIRS) && defined(AVS_DIFFUSE) && \
+  (!defined(AVS_SURFACE) || defined(AVS_SURFACE_PER_PAIR))
       // With the diffuse field's light at the sample itself (T <= older: every sample that
       // adds it passed the test above; T (1 - e^(-sigma dt)) where T is above the threshold),
-      // both times the colour: one term.
+      // both times the colour: one term. (Surfaces per pair: with what the pair's surface
+      // reflects of the lights' direct light and of the diffuse field, weighed in the pair's
+      // snippet, which needs no colour.)
       float diffuseWeight = T >= u_termination ? T * (1.0 - extinction) : 0.0;
       L += here.rgb * (lagged * dt * here.a * g_pairLight + diffuseWeight * g_pairFluence);
+#ifdef AVS_SURFACE_PER_PAIR
+      L += diffuseWeight * g_pairFluenceWhite;
+#endif
 #elif defined(AVS_SAMPLE_PAIRS)
       L += lagged * dt * here.a * here.rgb * g_pairLight;
 #else
@@ -576,10 +582,12 @@ void EffectLeap(int from, int to)
       SurfaceLights(origin + t * direction, direction); // with the lights just read
 #endif
 #endif
-#if defined(AVS_DIFFUSE) && !(defined(AVS_SAMPLE_PAIRS) && !defined(AVS_SURFACE))
+#if defined(AVS_DIFFUSE) && \
+  !(defined(AVS_SAMPLE_PAIRS) && (!defined(AVS_SURFACE) || defined(AVS_SURFACE_PER_PAIR)))
       // The extended model's diffuse light at the sample itself (T <= older: every sample
       // that adds it passed the test above), phi from the pair's snippet or from the
-      // InScattered just now, times albedo / (4 pi). (Pairs without surfaces: above.)
+      // InScattered just now, times albedo / (4 pi). (Pairs without surfaces or with surfaces
+      // per pair: above.)
       if (T >= u_termination)
       {
 #ifdef AVS_SAMPLE_PAIRS
@@ -587,11 +595,7 @@ void EffectLeap(int from, int to)
 #else
         vec3 scattered = ScatteredFluence(g_phi, g_averaged, i, dt) * (u_albedo / (4.0 * PI));
 #endif
-#if defined(AVS_SURFACE_PER_PAIR)
-        // Surfaces reflect the diffuse field too, and the lights' direct light, weighed in the
-        // pair's snippet.
-        L += T * (1.0 - extinction) * (here.rgb * scattered + g_pairFluenceWhite);
-#elif defined(AVS_SURFACE)
+#if defined(AVS_SURFACE)
         // Surfaces reflect the diffuse field too (avs_surface.glsl).
         L += T * (1.0 - extinction) * DiffuseFieldColor(here.rgb) * scattered;
 #else
