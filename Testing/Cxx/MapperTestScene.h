@@ -181,11 +181,15 @@ struct TestScene
   vtkNew<vtkRenderWindow> Window;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkVolume> Volume;
-  explicit TestScene(vtkVolumeMapper* mapper, int size = 96)
+  /// `testLights`: the test lights (AddTestLights); else none, so that VTK makes its headlight.
+  explicit TestScene(vtkVolumeMapper* mapper, int size = 96, bool testLights = true)
   {
     PrepareTestWindow(this->Window, size, size);
     this->Window->AddRenderer(this->Renderer);
-    AddTestLights(this->Renderer);
+    if (testLights)
+    {
+      AddTestLights(this->Renderer);
+    }
     PlaceTestCamera(this->Renderer->GetActiveCamera());
     this->Volume->SetMapper(mapper);
     this->Volume->SetProperty(MakeTestProperty());

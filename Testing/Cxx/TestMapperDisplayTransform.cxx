@@ -34,26 +34,14 @@ namespace
 constexpr double StillRate = 0.0001;
 constexpr double FastRate = 10000.0; // no frame meets it: every frame interactive, reduced
 
-struct Scene
+// The test scene without the test lights (VTK's headlight), the data at 0.02 per sample.
+struct Scene : TestScene
 {
-  vtkNew<vtkRenderWindow> Window;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkVolume> Volume;
   Scene(vtkAVSVolumeMapper* mapper, vtkImageData* data, int size = 96)
+    : TestScene(mapper, size, false)
   {
-    PrepareTestWindow(this->Window, size, size);
-    this->Window->AddRenderer(this->Renderer);
-    PlaceTestCamera(this->Renderer->GetActiveCamera());
     mapper->SetInputData(data);
     mapper->SetSampleDistance(0.02);
-    this->Volume->SetMapper(mapper);
-    this->Volume->SetProperty(MakeTestProperty());
-    this->Renderer->AddVolume(this->Volume);
-  }
-  vtkSmartPointer<vtkImageData> Render()
-  {
-    this->Window->Render();
-    return Grab(this->Window);
   }
 };
 

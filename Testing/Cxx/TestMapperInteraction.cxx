@@ -32,25 +32,13 @@ namespace
 constexpr double StillRate = 0.0001;
 constexpr double FastRate = 10000.0;
 
-struct Scene
+// The test scene without the test lights (VTK's headlight).
+struct Scene : TestScene
 {
-  vtkNew<vtkRenderWindow> Window;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkVolume> Volume;
-  Scene(vtkVolumeMapper* mapper, vtkImageData* data, int width, int height = 0)
+  Scene(vtkVolumeMapper* mapper, vtkImageData* data, int size)
+    : TestScene(mapper, size, false)
   {
-    PrepareTestWindow(this->Window, width, height > 0 ? height : width);
-    this->Window->AddRenderer(this->Renderer);
-    PlaceTestCamera(this->Renderer->GetActiveCamera());
     mapper->SetInputData(data);
-    this->Volume->SetMapper(mapper);
-    this->Volume->SetProperty(MakeTestProperty());
-    this->Renderer->AddVolume(this->Volume);
-  }
-  vtkSmartPointer<vtkImageData> Render()
-  {
-    this->Window->Render();
-    return Grab(this->Window);
   }
 };
 
