@@ -292,18 +292,22 @@ bool vtkAVSScatteringVolumes::UpdateDiffuse(const vtkAVSPrecomputeInputs& inputs
     lightKey.insert(lightKey.end(),
       { static_cast<double>(l.Type), l.ConeAngle, l.Exponent, rp.Albedo, rp.Anisotropy });
   }
+  std::vector<avs::Light> lights;
+  for (const auto& state : this->Lights)
+  {
+    lights.push_back(state.DataFrame);
+  }
   if (!rebuilt && this->DiffuseUploaded && this->DiffuseOnGPU == (gpu ? 1 : 0) &&
     this->DiffuseLights == lightKey && this->DiffuseIterations == rp.DiffusionIterations &&
     this->DiffuseCoarseIterations == rp.DiffusionCoarseIterations &&
     this->DiffuseGridMaximum == rp.DiffusionVolumeMaximumDimension)
   {
-    return true;
+    // (The fluence beside the lights where it fits, again where their textures were remade.)
+    return caster.PackFluence(lights, error);
   }
-  std::vector<avs::Light> lights;
   std::vector<avs::Grid> volumes;
   for (const auto& state : this->Lights)
   {
-    lights.push_back(state.DataFrame);
     volumes.push_back(state.Volume);
   }
   vtkAVSDiffuseVolume& diffuse = caster.GetDiffuseVolume();
@@ -331,5 +335,6 @@ bool vtkAVSScatteringVolumes::UpdateDiffuse(const vtkAVSPrecomputeInputs& inputs
   this->DiffuseGridMaximum = rp.DiffusionVolumeMaximumDimension;
   this->DiffuseLights = lightKey;
   ++this->DiffusionRebuilds;
-  return true;
+  // With lights of one colour, the fluence as one number beside them, for one fetch fewer.
+  return caster.PackFluence(lights, error);
 }

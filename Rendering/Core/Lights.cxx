@@ -58,4 +58,32 @@ Vec3 Light::FreeIrradiance(const Vec3& x) const
   return this->Irradiance * scale;
 }
 
+bool CommonColour(const std::vector<Light>& lights, Vec3& colour)
+{
+  if (lights.empty())
+  {
+    return false;
+  }
+  const Vec3& first = lights.front().Irradiance;
+  const double largest = std::max({ first.x, first.y, first.z });
+  if (!(largest > 0.0) || std::min({ first.x, first.y, first.z }) < 0.0)
+  {
+    return false;
+  }
+  colour = first * (1.0 / largest);
+  for (const Light& l : lights)
+  {
+    // Proportional to the first: no component negative, and parallel to a relative precision
+    // that the float textures cannot tell apart.
+    const Vec3& e = l.Irradiance;
+    const double length = Length(e);
+    if (std::min({ e.x, e.y, e.z }) < 0.0 || !(length > 0.0) ||
+      Length(Cross(e, colour)) > 1e-6 * length * Length(colour))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 } // namespace avs

@@ -12,6 +12,8 @@
 
 #include "Vec3.h"
 
+#include <vector>
+
 namespace avs
 {
 
@@ -43,6 +45,12 @@ struct Light
   /// Unoccluded irradiance at x: falloff and cone included, no volume attenuation.
   Vec3 FreeIrradiance(const Vec3& x) const;
 };
+
+/// Whether the lights' irradiances share one colour: each a positive multiple of one RGB
+/// vector (none black, no component negative). Then what is linear in the lights' light, as
+/// the extended model's diffuse fluence, is that colour times one number per point; `colour`
+/// gets the first light's irradiance over its largest component.
+bool CommonColour(const std::vector<Light>& lights, Vec3& colour);
 
 } // namespace avs
 

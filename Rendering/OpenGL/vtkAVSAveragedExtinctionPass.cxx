@@ -21,16 +21,38 @@ double vtkAVSAveragedExtinctionPass::SlabBytes()
   return bytes > 0.0 ? bytes : 16.0 * 1024 * 1024;
 }
 
-unsigned int vtkAVSAveragedExtinctionPass::Build(const vtkAVSClassification::Layout& layout)
+int vtkAVSAveragedExtinctionPass::MaximumWindowRing()
+{
+  const char* value = std::getenv("AVS_AVERAGING_WINDOW_RING");
+  return value ? std::max(0, std::atoi(value)) : 256;
+}
+
+int vtkAVSAveragedExtinctionPass::WindowRing(int halfWidth)
+{
+  const int most = MaximumWindowRing();
+  int ring = 2;
+  while (ring < 2 * halfWidth + 2 && ring <= most)
+  {
+    ring *= 2;
+  }
+  return ring <= most ? ring : 0;
+}
+
+unsigned int vtkAVSAveragedExtinctionPass::Build(const vtkAVSClassification::Layout& layout,
+  int halfWidth)
 {
   const std::string defines = layout.Defines();
-  if (this->Program[0] && this->Program[1] && this->Defines == defines)
+  // A ring serves every window narrower than it: built again only for a wider one.
+  const int needed = WindowRing(halfWidth);
+  const bool serves = needed == 0 ? this->Ring == 0 : this->Ring >= needed;
+  if (this->Program[0] && this->Program[1] && this->Defines == defines && serves)
   {
     return this->Program[0];
   }
   this->ReleaseGraphicsResources(true);
   this->Program[0] = vtkAVSShaderAssembly::BuildComputeProgram(
-    vtkAVSShaderAssembly::AveragedExtinctionShader(defines + "#define AVS_AVERAGE_CLASSIFY\n")
+    vtkAVSShaderAssembly::AveragedExtinctionShader(defines + "#define AVS_AVERAGE_CLASSIFY\n" +
+      "#define AVS_AVERAGE_RING " + std::to_string(needed) + "\n")
       .c_str(),
     "averaged-extinction");
   this->Program[1] = vtkAVSShaderAssembly::BuildComputeProgram(
@@ -41,6 +63,7 @@ unsigned int vtkAVSAveragedExtinctionPass::Build(const vtkAVSClassification::Lay
     return 0;
   }
   this->Defines = defines;
+  this->Ring = needed;
   return this->Program[0];
 }
 
@@ -49,16 +72,18 @@ void vtkAVSAveragedExtinctionPass::ReleaseGraphicsResources(bool context)
   vtkAVSShaderAssembly::ReleaseComputeProgram(this->Program[0], context);
   vtkAVSShaderAssembly::ReleaseComputeProgram(this->Program[1], context);
   this->Defines.clear();
+  this->Ring = 0;
 }
 
 bool vtkAVSAveragedExtinctionPass::Begin(vtkAVSVolumeTextures& textures,
   const avs::ClipRegion& clip,
+  int halfWidth,
   double inverseCount,
   std::string& error)
 {
-  // The program for this classification.
+  // The program for this classification and pass 1's window.
   const vtkAVSClassification::Layout& layout = textures.Classification.GetLayout();
-  if (!this->Build(layout))
+  if (!this->Build(layout, halfWidth))
   {
     error = "the averaged-extinction compute shader did not compile (see the log above)";
     return false;
@@ -150,7 +175,7 @@ bool vtkAVSAveragedExtinctionPass::Run(vtkAVSVolumeTextures& textures,
   ++textures.AveragedWrites;
   const double count =
     (2.0 * halfWidths[0] + 1) * (2.0 * halfWidths[1] + 1) * (2.0 * halfWidths[2] + 1);
-  if (!this->Begin(textures, clip, 1.0 / count, error))
+  if (!this->Begin(textures, clip, halfWidths[0], 1.0 / count, error))
   {
     return false;
   }
@@ -186,7 +211,7 @@ bool vtkAVSAveragedExtinctionPass::Classify(vtkAVSVolumeTextures& textures,
   std::string& error)
 {
   // Pass 1 with a window of one voxel and no shrinking: sigma_t at each voxel.
-  if (!this->Begin(textures, clip, 1.0, error))
+  if (!this->Begin(textures, clip, 0, 1.0, error))
   {
     return false;
   }

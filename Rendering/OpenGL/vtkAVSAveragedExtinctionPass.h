@@ -35,10 +35,20 @@ public:
   vtkAVSAveragedExtinctionPass(const vtkAVSAveragedExtinctionPass&) = delete;
   vtkAVSAveragedExtinctionPass& operator=(const vtkAVSAveragedExtinctionPass&) = delete;
 
-  /// The programs for a classification layout (built again when its defines change): pass 1's,
-  /// which classifies, and that of passes 2 and 3, which sum the pass before's grid; pass 1's
-  /// program, 0 when either does not compile.
-  unsigned int Build(const vtkAVSClassification::Layout& layout);
+  /// The widest ring of classified values pass 1 keeps (entries): 256, windows of up to 127
+  /// voxels either side, or AVS_AVERAGING_WINDOW_RING from the environment where set (so that a
+  /// test can make pass 1 classify each voxel twice, with 0).
+  static int MaximumWindowRing();
+  /// The ring pass 1 keeps for a window of half width `halfWidth` voxels: the smallest power of
+  /// two above 2 halfWidth + 1, or 0 where that is above MaximumWindowRing (then each voxel is
+  /// classified again when it leaves the window).
+  static int WindowRing(int halfWidth);
+
+  /// The programs for a classification layout and pass 1's half width along x (built again when
+  /// its defines change or the window needs a wider ring): pass 1's, which classifies, and that
+  /// of passes 2 and 3, which sum the pass before's grid; pass 1's program, 0 when either does
+  /// not compile.
+  unsigned int Build(const vtkAVSClassification::Layout& layout, int halfWidth = 0);
   /// Runs the passes (the caller checked for compute shaders, scalars and classification).
   bool Run(vtkAVSVolumeTextures& textures,
     const std::array<int, 3>& dimensions,
@@ -61,6 +71,7 @@ private:
   /// The program made current with the classification and clipping bound.
   bool Begin(vtkAVSVolumeTextures& textures,
     const avs::ClipRegion& clip,
+    int halfWidth,
     double inverseCount,
     std::string& error);
   /// One pass over the grid `in` (pass 1: the data, or its slab from `zOffset`).
@@ -79,6 +90,8 @@ private:
   unsigned int Program[2] = { 0, 0 };
   /// Classification and packing defines it was built with.
   std::string Defines;
+  /// Pass 1's ring (WindowRing) it was built with.
+  int Ring = 0;
 };
 
 #endif

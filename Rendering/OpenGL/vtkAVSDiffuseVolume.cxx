@@ -50,6 +50,7 @@ bool vtkAVSDiffuseVolume::Upload(vtkOpenGLRenderWindow* window,
     return false;
   }
   this->Dimensions = d;
+  ++this->Writes;
   return true;
 }
 
@@ -291,6 +292,7 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
     error = "OpenGL error " + std::to_string(status) + " in the diffusion solve";
     return false;
   }
+  ++this->Writes;
   return true;
 }
 
@@ -314,14 +316,26 @@ std::vector<vtkTextureObject*> vtkAVSDiffuseVolume::GetTextures() const
   return textures;
 }
 
-void vtkAVSDiffuseVolume::Bind(vtkShaderProgram* program, const avs::ScatteringParameters& p)
+void vtkAVSDiffuseVolume::Bind(vtkShaderProgram* program,
+  const avs::ScatteringParameters& p,
+  const avs::Vec3* colour)
 {
   if (!this->Texture)
   {
     return;
   }
-  this->Texture->Activate();
-  program->SetUniformi("u_diffuse", this->Texture->GetTextureUnit());
+  if (colour)
+  {
+    const float c[3] = {
+      static_cast<float>(colour->x), static_cast<float>(colour->y), static_cast<float>(colour->z)
+    };
+    program->SetUniform3f("u_phiColour", c);
+  }
+  else
+  {
+    this->Texture->Activate();
+    program->SetUniformi("u_diffuse", this->Texture->GetTextureUnit());
+  }
   program->SetUniformf("u_anisotropy", static_cast<float>(p.Anisotropy));
   program->SetUniformf("u_reducedFloor",
     static_cast<float>(1.0 / std::max(1e-30, avs::TransportLengthLimitInRadii * p.AmbientRadius)));

@@ -69,9 +69,18 @@ public:
   std::function<std::vector<vtkTextureObject*>()> OtherTextures;
   /// Whether a fluence is uploaded.
   bool IsReady() const { return this->Texture != nullptr; }
+  /// The texture (phi, sigma~t) on the light grid; null before the first upload or solve.
+  vtkTextureObject* GetTexture() const { return this->Texture; }
+  /// How often the texture was written (uploaded or solved into): a copy of it is current
+  /// while it was made at this count.
+  int GetWrites() const { return this->Writes; }
   /// Activates the texture and sets the program's u_diffuse, u_anisotropy and u_reducedFloor
-  /// (the flux limiter's, for the flux term along the ray) for `resolved`.
-  void Bind(vtkShaderProgram* program, const avs::ScatteringParameters& resolved);
+  /// (the flux limiter's, for the flux term along the ray) for `resolved`; with `colour` (lights
+  /// of one colour whose fluence the rays read from a light texture's slot,
+  /// vtkAVSLightVolumePass::CopyFluence) u_phiColour instead of the texture.
+  void Bind(vtkShaderProgram* program,
+    const avs::ScatteringParameters& resolved,
+    const avs::Vec3* colour = nullptr);
   void Unbind();
   void ReleaseGraphicsResources(vtkWindow* window);
 
@@ -103,6 +112,7 @@ private:
   std::array<unsigned int, 3> Programs{ 0, 0, 0 };
   std::string ProgramDefines;
   std::array<int, 3> Dimensions{ 0, 0, 0 }; ///< the texture's (the light grid)
+  int Writes = 0;                           ///< GetWrites
 };
 
 #endif

@@ -14,9 +14,10 @@
 
 bool vtkAVSLightVolumePass::Build(int maximumTauNodes, bool software)
 {
-  const char* variants[NumberOfVariants] = {
-    "", "#define AVS_LIGHT_VOLUME_POSITIONAL\n", "#define AVS_LIGHT_VOLUME_COPY\n"
-  };
+  const char* variants[NumberOfVariants] = { "",
+    "#define AVS_LIGHT_VOLUME_POSITIONAL\n",
+    "#define AVS_LIGHT_VOLUME_COPY\n",
+    "#define AVS_LIGHT_VOLUME_COPY_FLUENCE\n" };
   for (int v = 0; v < NumberOfVariants; ++v)
   {
     this->Programs[v] = vtkAVSShaderAssembly::BuildComputeProgram(
@@ -98,6 +99,10 @@ bool vtkAVSLightVolumePass::Run(vtkAVSVolumeTextures& textures,
   {
     textures.AveragedSlot = -1; // overwritten
   }
+  if (index == textures.PhiSlot)
+  {
+    textures.PhiSlot = -1;
+  }
   auto uniforms = [&](const std::function<int(const char*)>& location)
   {
     glUniform3f(location("u_targetSpacing"),
@@ -156,5 +161,54 @@ bool vtkAVSLightVolumePass::CopyAveraged(vtkAVSVolumeTextures& textures,
   }
   textures.AveragedSlot = slot;
   textures.AveragedSlotWrites = textures.AveragedWrites;
+  if (slot == textures.PhiSlot)
+  {
+    textures.PhiSlot = -1; // overwritten
+  }
+  return true;
+}
+
+bool vtkAVSLightVolumePass::CopyFluence(vtkAVSVolumeTextures& textures,
+  int slot,
+  vtkTextureObject* fluence,
+  int writes,
+  const avs::Vec3& colour,
+  std::string& error)
+{
+  const int texture = slot / 4;
+  const double norm = avs::Dot(colour, colour);
+  if (slot < 0 || texture >= vtkAVSVolumeTextures::NumberOfLightTextures ||
+    !textures.LightVolumes[texture] || !textures.AveragedExtinction || !fluence || !(norm > 0.0))
+  {
+    error = "no light-volume channel to hold the diffuse fluence";
+    return false;
+  }
+  if (slot == textures.AveragedSlot)
+  {
+    textures.AveragedSlot = -1; // overwritten
+  }
+  textures.PhiSlot = -1;
+  fluence->Activate();
+  const bool ok = this->Dispatch(
+    textures,
+    slot,
+    CopyFluenceVariant,
+    [&](const std::function<int(const char*)>& location)
+    {
+      glUniform1i(location("u_fluence"), fluence->GetTextureUnit());
+      glUniform3f(location("u_fluenceWeights"),
+        static_cast<float>(colour.x / norm),
+        static_cast<float>(colour.y / norm),
+        static_cast<float>(colour.z / norm));
+    },
+    "copying the diffuse fluence",
+    error);
+  fluence->Deactivate();
+  if (!ok)
+  {
+    return false;
+  }
+  textures.PhiSlot = slot;
+  textures.PhiSlotWrites = writes;
   return true;
 }

@@ -6,7 +6,8 @@
  * transmittance of each node of the light grid through the averaged extinction, weighted by the
  * table slice's log gain, into the light's channel of the packed light-volume textures
  * (vtkAVSVolumeTextures; channel c of texture t holds light 4 t + c, allocated once per size),
- * and the copy of the averaged extinction into the channel after the last light's.
+ * and the copies of the averaged extinction into the channel after the last light's and of the
+ * extended model's fluence of lights of one colour into the one after that.
  * The CPU twin is Rendering/Core/LightVolume.cxx.
  */
 #ifndef vtkAVSLightVolumePass_h
@@ -20,6 +21,7 @@
 #include <string>
 
 class vtkAVSVolumeTextures;
+class vtkTextureObject;
 
 class vtkAVSLightVolumePass
 {
@@ -46,18 +48,30 @@ public:
   /// transmittances: one texture fetch per sample fewer for 1-3 and 5-7 lights. Records it in
   /// vtkAVSVolumeTextures::AveragedSlot.
   bool CopyAveraged(vtkAVSVolumeTextures& textures, int slot, std::string& error);
+  /// Copies the extended model's diffuse fluence `fluence` (RGBA on the light grid:
+  /// vtkAVSDiffuseVolume) of lights of the one colour `colour` (avs::CommonColour) into slot
+  /// `slot` as one number per point, phi.c / c.c, which the ray caster multiplies by c: the
+  /// fluence read in the lights' fetch, one fetch per pair of samples fewer for 1, 2, 5 or 6
+  /// lights. Records it in vtkAVSVolumeTextures::PhiSlot with `writes`.
+  bool CopyFluence(vtkAVSVolumeTextures& textures,
+    int slot,
+    vtkTextureObject* fluence,
+    int writes,
+    const avs::Vec3& colour,
+    std::string& error);
   /// Forgets the program, deleting it when its context is current (`context`).
   void ReleaseGraphicsResources(bool context);
 
 private:
-  /// The programs: tube marching from a directional light, from a positional one, and the
-  /// averaged extinction's copy (one each: a software rasterizer runs every branch of a
-  /// shader, so the copy would pay for a march).
+  /// The programs: tube marching from a directional light, from a positional one, the
+  /// averaged extinction's copy and the fluence's (one each: a software rasterizer runs every
+  /// branch of a shader, so a copy would pay for a march).
   enum Variant
   {
     Directional,
     Positional,
     Copy,
+    CopyFluenceVariant,
     NumberOfVariants
   };
   /// The program over the light grid into slot `slot` of the packed textures (channel slot % 4
@@ -71,7 +85,7 @@ private:
     const char* what,
     std::string& error);
   /// GL names of the light-volume compute programs, one per Variant.
-  unsigned int Programs[NumberOfVariants] = { 0, 0, 0 };
+  unsigned int Programs[NumberOfVariants] = { 0, 0, 0, 0 };
 };
 
 #endif

@@ -303,6 +303,26 @@ bool vtkAVSRayCaster::PackAveraged(int lights, std::string& error)
   return this->LightVolumePass.CopyAveraged(tx, lights, error);
 }
 
+bool vtkAVSRayCaster::PackFluence(const std::vector<avs::Light>& lights, std::string& error)
+{
+  vtkAVSVolumeTextures& tx = this->Textures;
+  const int n = static_cast<int>(lights.size());
+  vtkTextureObject* fluence = this->Diffuse.GetTexture();
+  avs::Vec3 colour;
+  // The slot after the averaged extinction's copy, in the same texture (1, 2, 5 or 6 lights).
+  if (n < 1 || n % 4 == 0 || n % 4 == 3 || n > MaximumNumberOfLights ||
+    !this->SupportsComputeShaders() || !tx.HasAveragedIn(n) || !fluence ||
+    tx.HasFluenceIn(n + 1, this->Diffuse.GetWrites()) || !avs::CommonColour(lights, colour) ||
+    tx.LightTextureDimensions[0] != int(fluence->GetWidth()) ||
+    tx.LightTextureDimensions[1] != int(fluence->GetHeight()) ||
+    tx.LightTextureDimensions[2] != int(fluence->GetDepth()))
+  {
+    return true; // current, or nowhere to copy it: the rays read the fluence's texture
+  }
+  return this->LightVolumePass.CopyFluence(
+    tx, n + 1, fluence, this->Diffuse.GetWrites(), colour, error);
+}
+
 bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::string& error)
 {
   vtkOpenGLRenderWindow* window = this->Window;
@@ -327,8 +347,14 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     static_cast<int>(std::min<std::size_t>(frame.Lights.size(), MaximumNumberOfLights));
   const bool extended = frame.Mode == avs::RenderMode::AmbientScattering &&
     frame.Parameters.Model == avs::ScatteringModel::Extended;
-  const bool packed =
-    frame.Mode == avs::RenderMode::AmbientScattering && !extended && tx.HasAveragedIn(lightCount);
+  // With lights of one colour, the extended model's fluence as one number in the channel after
+  // the averaged extinction's (PackFluence), both read with the lights.
+  avs::Vec3 fluenceColour;
+  const bool fluencePacked = extended && tx.HasAveragedIn(lightCount) &&
+    tx.HasFluenceIn(lightCount + 1, this->Diffuse.GetWrites()) &&
+    avs::CommonColour(frame.Lights, fluenceColour);
+  const bool packed = frame.Mode == avs::RenderMode::AmbientScattering &&
+    (!extended || fluencePacked) && tx.HasAveragedIn(lightCount);
   // Empty-space skipping: not for the blend modes other than composite (they read every
   // sample's scalar) nor for ambient scattering's explicit look-ahead (a sample adds the light
   // of one ahead of it).
@@ -344,6 +370,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
           static_cast<int>(tx.TableSize[1]),
           layout,
           packed ? lightCount : -1,
+          fluencePacked ? lightCount + 1 : -1,
           frame.LightsPerPair) +
           vtkAVSShaderOptions::ClipDefines(frame.Clip) +
           (blend ? vtkAVSShaderOptions::BlendDefines(frame.Blend) : std::string()) +
@@ -501,7 +528,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
         error = "the diffuse fluence is not uploaded";
         return false;
       }
-      this->Diffuse.Bind(program, frame.Parameters);
+      this->Diffuse.Bind(program, frame.Parameters, fluencePacked ? &fluenceColour : nullptr);
     }
   }
 

@@ -153,6 +153,14 @@ public:
   /// the copy is current, or when there is no free channel or no compute shader (the rays then
   /// read the averaged extinction's own texture). False on a GL error.
   bool PackAveraged(int lights, std::string& error);
+  /// In the extended model with 1, 2, 5 or 6 `lights` of one colour (avs::CommonColour) and the
+  /// averaged extinction packed (PackAveraged), copies the diffuse fluence as one number per
+  /// point into the channel after the averaged extinction's
+  /// (vtkAVSLightVolumePass::CopyFluence): the rays then read the lights, the averaged
+  /// extinction and the fluence with one fetch. Call after the fluence is current; nothing
+  /// happens where the copy is current or cannot be made (the rays then read the fluence's
+  /// texture). False on a GL error.
+  bool PackFluence(const std::vector<avs::Light>& lights, std::string& error);
   bool UploadOcclusion(const avs::Grid& occlusion, std::string& error);
   bool UploadTableSlice(const avs::ScatteringSlice& slice, std::string& error);
   /// The extended model's diffuse fluence (vtkAVSDiffuseVolume), bound when the frame's

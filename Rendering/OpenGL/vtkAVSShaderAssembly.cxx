@@ -65,6 +65,7 @@ std::string vtkAVSShaderAssembly::RayCastDefines(avs::RenderMode mode,
   int tauNodes,
   const vtkAVSClassification::Layout& layout,
   int averagedSlot,
+  int phiSlot,
   bool lightsPerPair)
 {
   // The classification's choices (avs_classify.glsl).
@@ -113,12 +114,22 @@ std::string vtkAVSShaderAssembly::RayCastDefines(avs::RenderMode mode,
   const int n = static_cast<int>(lights.size());
   defines += "#define AVS_LIGHT_TEXTURES " +
     std::to_string(vtkAVSVolumeTextures::LightTexturesFor(n)) + "\n";
-  // The averaged extinction in the free channel after the last light's, read with them.
-  if (averagedSlot >= 0 && !extended &&
-    vtkAVSVolumeTextures::LightTexturesFor(averagedSlot + 1) ==
-      vtkAVSVolumeTextures::LightTexturesFor(n))
+  // The averaged extinction in the free channel after the last light's, read with them; in the
+  // extended model only with the fluence of lights of one colour in the channel after it (else
+  // both are read from the fluence's texture).
+  auto withLights = [n](int slot)
+  {
+    return slot >= 0 &&
+      vtkAVSVolumeTextures::LightTexturesFor(slot + 1) == vtkAVSVolumeTextures::LightTexturesFor(n);
+  };
+  const bool fluenceSlot = extended && withLights(averagedSlot) && withLights(phiSlot);
+  if (withLights(averagedSlot) && (!extended || fluenceSlot))
   {
     defines += "#define AVS_AVERAGED_SLOT " + std::to_string(averagedSlot) + "\n";
+  }
+  if (fluenceSlot)
+  {
+    defines += "#define AVS_PHI_SLOT " + std::to_string(phiSlot) + "\n";
   }
   if (p.EmissionWeight > 0.0 && p.Albedo < 1.0)
   {

@@ -34,7 +34,9 @@ public:
   /// look-ahead), the diffuse fluence, the light textures to fetch, emission and the per-ray table
   /// columns of directional lights (`tauNodes`: the table slice's tau axis), and where the
   /// averaged extinction is read (`averagedSlot`: the light-texture slot that holds a copy of
-  /// it, vtkAVSVolumeTextures::AveragedSlot, or -1 for its own texture), and whether the lights
+  /// it, vtkAVSVolumeTextures::AveragedSlot, or -1 for its own texture), where the extended
+  /// model's fluence of lights of one colour is (`phiSlot`, vtkAVSVolumeTextures::PhiSlot: with
+  /// `averagedSlot`, the rays read neither from the fluence's texture), and whether the lights
   /// are read once per pair of samples (`lightsPerPair`, avs::ScatteringParameters::LightsPerPair).
   /// One program per combination.
   static std::string RayCastDefines(avs::RenderMode mode,
@@ -43,6 +45,7 @@ public:
     int tauNodes,
     const vtkAVSClassification::Layout& layout,
     int averagedSlot = -1,
+    int phiSlot = -1,
     bool lightsPerPair = false);
   /// The ray-casting fragment shader of `mode` with `defines` (RayCastDefines, the clipping's and
   /// the blend mode's); a blend mode other than composite (AVS_BLEND) takes the blend effect.

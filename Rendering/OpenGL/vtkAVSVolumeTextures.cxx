@@ -42,6 +42,7 @@ void vtkAVSVolumeTextures::ReleaseGraphicsResources(vtkWindow* window)
     }
   }
   this->AveragedSlot = -1;
+  this->PhiSlot = -1;
   this->ReleaseBricks(window);
   this->Bricks.Clear();
   this->Scalars = this->AveragedExtinction = this->Occlusion = this->Table = nullptr;
@@ -674,6 +675,7 @@ bool vtkAVSVolumeTextures::EnsureLightTextures(const std::array<int, 3>& dimensi
   if (dimensions != this->LightTextureDimensions)
   {
     this->AveragedSlot = -1;
+    this->PhiSlot = -1;
     for (auto& t : this->LightVolumes)
     {
       if (t)
@@ -728,6 +730,7 @@ bool vtkAVSVolumeTextures::UploadLightVolumes(const std::vector<avs::Grid>& ligh
   }
   const int textures = LightTexturesFor(static_cast<int>(lights.size()));
   this->AveragedSlot = -1; // every channel is written below
+  this->PhiSlot = -1;
   for (int t = 0; t < NumberOfLightTextures; ++t)
   {
     if (t >= textures)

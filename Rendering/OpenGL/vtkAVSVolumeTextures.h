@@ -200,6 +200,16 @@ public:
     return slot >= 0 && this->AveragedSlot == slot &&
       this->AveragedSlotWrites == this->AveragedWrites;
   }
+  /// The slot that holds the extended model's diffuse fluence as one number per point (its
+  /// lights of one colour, vtkAVSLightVolumePass::CopyFluence), -1 for none; the copy is of the
+  /// fluence written PhiSlotWrites-th (vtkAVSDiffuseVolume::GetWrites).
+  int PhiSlot = -1;
+  int PhiSlotWrites = -1;
+  /// Whether slot `slot` holds the fluence of write `writes`.
+  bool HasFluenceIn(int slot, int writes) const
+  {
+    return slot >= 0 && this->PhiSlot == slot && this->PhiSlotWrites == writes;
+  }
   /// The averaged-extinction pass's intermediate grids (sigma_t summed along x, then along y,
   /// each shrunk to the light grid on its axis), released after the pass (ReleaseScratch).
   vtkSmartPointer<vtkTextureObject> Scratch[2];

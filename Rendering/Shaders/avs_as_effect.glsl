@@ -23,18 +23,46 @@
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 #define AVS_EFFECT_TERMINATION
 #endif
+// Light grid: tube transmittance of lights 0-3, then 4-7.
+#if AVS_LIGHT_TEXTURES > 0
+uniform sampler3D u_lightVolumes0;
+#endif
+#if AVS_LIGHT_TEXTURES > 1
+uniform sampler3D u_lightVolumes1;
+#endif
 // The averaged sigma_t on the light grid (where the precomputation leaves it), read at the
 // sample with the light volumes' coordinate (ARCHITECTURE.md, "Texel formats"): with 1-3 or 5-7
 // lights from the copy in the free channel after the last light's, AVS_AVERAGED_SLOT (slot s:
 // channel s % 4 of light texture s / 4), in the same fetch as the lights; in the extended model
-// from the alpha of the diffuse fluence's texture (below), in the same fetch as phi; else from
-// its own texture, one fetch more.
+// with phi, from the alpha of the diffuse fluence's texture or with lights of one colour from
+// that slot too (below); else from its own texture, one fetch more.
 #ifdef AVS_DIFFUSE
 // The extended model (ARCHITECTURE.md, "Beyond the paper"): the diffuse fluence phi (RGB) of
 // the diffusion solve (Core/DiffuseFluence.h), interpolated onto the light grid, with the
 // averaged sigma_t in alpha; the ring's samples keep the phi their InScattered (with pairs: the
-// pair's snippet) read.
+// pair's snippet) read. With lights of one colour c (1, 2, 5 or 6 of them), AVS_PHI_SLOT: phi /
+// c as one number in the light textures' slot after the averaged extinction's
+// (AVS_AVERAGED_SLOT), read in the lights' fetch (vtkAVSLightVolumePass::CopyFluence).
+#ifdef AVS_PHI_SLOT
+uniform vec3 u_phiColour;
+#if AVS_PHI_SLOT < 4
+#define AVS_PHI_TEXTURE u_lightVolumes0
+#else
+#define AVS_PHI_TEXTURE u_lightVolumes1
+#endif
+// (phi, sigma~t) at light-grid coordinate lc.
+vec4 DiffuseAt(vec3 lc)
+{
+  vec4 t = textureLod(AVS_PHI_TEXTURE, lc, 0.0);
+  return vec4(t[AVS_PHI_SLOT & 3] * u_phiColour, t[AVS_AVERAGED_SLOT & 3]);
+}
+#else
 uniform sampler3D u_diffuse;
+vec4 DiffuseAt(vec3 lc)
+{
+  return textureLod(u_diffuse, lc, 0.0);
+}
+#endif
 vec3 g_phi = vec3(0.0);
 float g_averaged = 0.0;
 #ifdef AVS_DIFFUSE_ANISOTROPIC
@@ -48,13 +76,6 @@ int g_phiBeforeIndex = -100;
 #endif
 #elif !defined(AVS_AVERAGED_SLOT)
 uniform sampler3D u_averagedExtinction;
-#endif
-// Light grid: tube transmittance of lights 0-3, then 4-7.
-#if AVS_LIGHT_TEXTURES > 0
-uniform sampler3D u_lightVolumes0;
-#endif
-#if AVS_LIGHT_TEXTURES > 1
-uniform sampler3D u_lightVolumes1;
 #endif
 uniform vec3 u_lightVolumeDimensions;
 // The light grid covers the whole image of which the volume is a piece (distributed rendering;
@@ -295,8 +316,13 @@ vec3 LightSum(vec3 index, vec3 world, vec3 direction)
 #else
   vec4 tubes1 = vec4(1.0);
 #endif
-#if defined(AVS_DIFFUSE)
-  vec4 diffuse = textureLod(u_diffuse, lc, 0.0);
+#if defined(AVS_DIFFUSE) && defined(AVS_PHI_SLOT)
+  // (Both in the fetch above.)
+  float averaged = AVS_PHI_SLOT < 4 ? tubes0[AVS_AVERAGED_SLOT & 3] : tubes1[AVS_AVERAGED_SLOT & 3];
+  g_phi = (AVS_PHI_SLOT < 4 ? tubes0[AVS_PHI_SLOT & 3] : tubes1[AVS_PHI_SLOT & 3]) * u_phiColour;
+  g_averaged = averaged;
+#elif defined(AVS_DIFFUSE)
+  vec4 diffuse = DiffuseAt(lc);
   float averaged = diffuse.a;
   g_phi = diffuse.rgb;
   g_averaged = averaged;
@@ -400,7 +426,7 @@ void EffectLeap(int from, int to)
   if (brickFirst - g_parity >= 2)
   {
     float tb = LightT(-g_parity) - 2.0 * dtWorld;
-    g_phiBefore = textureLod(u_diffuse, (io + tb * id) * g_lightScale + g_lightOffset, 0.0).rgb;
+    g_phiBefore = DiffuseAt((io + tb * id) * g_lightScale + g_lightOffset).rgb;
     g_phiBeforeIndex = -g_parity - 2;
   }
 #endif
@@ -459,8 +485,7 @@ void EffectLeap(int from, int to)
       if (!before && exists)
       {
         float tb = LightT(max(pair - 2, 0));
-        g_phiBefore =
-          textureLod(u_diffuse, (io + tb * id) * g_lightScale + g_lightOffset, 0.0).rgb;
+        g_phiBefore = DiffuseAt((io + tb * id) * g_lightScale + g_lightOffset).rgb;
         before = true;
       }
       vec3 slope = before ? (g_phi - g_phiBefore) / (2.0 * dt) : vec3(0.0);
@@ -498,11 +523,10 @@ void EffectLeap(int from, int to)
     if (here.a > 0.0 && T >= u_termination)
     {
       float tl = LightT(i);
-      vec4 diffuse = textureLod(u_diffuse, (io + tl * id) * g_lightScale + g_lightOffset, 0.0);
+      vec4 diffuse = DiffuseAt((io + tl * id) * g_lightScale + g_lightOffset);
 #if defined(AVS_LIGHTS_PER_PAIR) && defined(AVS_DIFFUSE_ANISOTROPIC)
       // dphi/dt from the pair before, two steps back (none before the unsplit ray's first).
-      vec3 before = textureLod(
-        u_diffuse, (io + (tl - 2.0 * dtWorld) * id) * g_lightScale + g_lightOffset, 0.0).rgb;
+      vec3 before = DiffuseAt((io + (tl - 2.0 * dtWorld) * id) * g_lightScale + g_lightOffset).rgb;
 #ifdef AVS_BRICKED
       bool afterFirstPair = brickFirst + i >= 2; // the unsplit ray's index
 #else

@@ -26,6 +26,24 @@ uniform int u_halfWidth;     // k along this pass's axis
 uniform float u_inverseCount; // 1 / prod(2 k_a + 1), applied in the last pass
 uniform int u_zOffset;       // passes 1 and 2: the slab's first slice in the data's z
 
+// Pass 1 keeps the window's classified values in a ring of AVS_AVERAGE_RING entries (a power of
+// two above 2 k + 1, the program built for it), so that each voxel is classified once, entering
+// the window, and its value taken out of the sum from the ring when it leaves; with a window too
+// wide for a ring (AVS_AVERAGE_RING 0) it is classified again when it leaves.
+#ifdef AVS_AVERAGE_CLASSIFY
+#if AVS_AVERAGE_RING > 0
+#define AVS_AVERAGE_WINDOW
+#endif
+#endif
+#ifdef AVS_AVERAGE_WINDOW
+float g_window[AVS_AVERAGE_RING];
+#define AVS_AVERAGE_KEEP(i, value) g_window[(i) & (AVS_AVERAGE_RING - 1)] = value
+#define AVS_AVERAGE_KEPT(i, v) g_window[(i) & (AVS_AVERAGE_RING - 1)]
+#else
+#define AVS_AVERAGE_KEEP(i, value)
+#define AVS_AVERAGE_KEPT(i, v) Input(v)
+#endif
+
 // u_scalars (pass 1) is declared by the classification.
 // Pass 1's input: Classify(s), the ray caster's classification (avs_classify.glsl), and 0
 // outside the clipping planes and cropping (avs_clip.glsl).
@@ -70,7 +88,9 @@ void main()
   double sum = 0.0;
   for (int j = 0; j <= min(k, n - 1); ++j)
   {
-    sum += double(Input(base + j * step));
+    float value = Input(base + j * step);
+    AVS_AVERAGE_KEEP(j, value);
+    sum += double(value);
   }
   double previous = sum; // the window sum at voxel i - 1
   int o = 0;
@@ -91,8 +111,12 @@ void main()
     int add = i + k + 1;
     int remove = i - k;
     if (add < n)
-      sum += double(Input(base + add * step));
+    {
+      float value = Input(base + add * step);
+      AVS_AVERAGE_KEEP(add, value);
+      sum += double(value);
+    }
     if (remove >= 0)
-      sum -= double(Input(base + remove * step));
+      sum -= double(AVS_AVERAGE_KEPT(remove, base + remove * step));
   }
 }

@@ -31,7 +31,14 @@ uniform int u_directBeam;
 // marching from a directional light, from a positional one (AVS_LIGHT_VOLUME_POSITIONAL), or,
 // with AVS_LIGHT_VOLUME_COPY, no tube marching: the averaged extinction itself is copied into
 // channel u_channel, where the ray caster reads it beside the lights' (the free channel of the
-// last light texture).
+// last light texture); with AVS_LIGHT_VOLUME_COPY_FLUENCE the extended model's diffuse fluence
+// of lights of one colour c, as the one number phi.c / c.c (u_fluenceWeights = c / c.c), into
+// the channel after that.
+#ifdef AVS_LIGHT_VOLUME_COPY_FLUENCE
+#define AVS_LIGHT_VOLUME_COPY
+uniform sampler3D u_fluence; // (phi, sigma~t) on the target grid (vtkAVSDiffuseVolume)
+uniform vec3 u_fluenceWeights;
+#endif
 uniform vec3 u_light;           // propagation direction (directional) or position (positional)
 
 float g_tauScale = 0.0;         // (tau nodes - 1) / log(1 + tau maximum), set in main
@@ -106,7 +113,11 @@ void main()
   }
 #ifdef AVS_LIGHT_VOLUME_COPY
   vec4 texel = imageLoad(u_target, voxel);
+#ifdef AVS_LIGHT_VOLUME_COPY_FLUENCE
+  texel[u_channel] = dot(texelFetch(u_fluence, voxel, 0).rgb, u_fluenceWeights);
+#else
   texel[u_channel] = texelFetch(u_averaged, voxel, 0).r;
+#endif
   imageStore(u_target, voxel, texel);
 #else
   vec3 x = vec3(voxel) * u_targetSpacing;

@@ -4,11 +4,13 @@
 // source and falls off towards the boundary; the nested solve's default sweeps converge on dense
 // and thin balls, where one grid's do not; the levels halve the grid over the same box; the
 // source is albedo (1 - g) sigma~t E T (albedo sigma~t E T for positional lights, whose tubes
-// carry the direct beam) times the share beyond the ambient ball, zero at albedo 0.
+// carry the direct beam) times the share beyond the ambient ball, zero at albedo 0; lights of
+// one colour give that colour times one number per point.
 #include "DiffuseFluence.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -225,4 +227,51 @@ TEST(DiffuseFluence, Source)
   EXPECT_NEAR(DiffusionSourceWeight(TubeLaw::DirectBeam, 0.8, 0.25), 0.8, 1e-12);
   s.Albedo = 0.0;
   EXPECT_EQ(DiffusionSource(sigma, { light }, tubes, g, s)[1].At(3, 4, 5), 0.0f);
+}
+
+TEST(DiffuseFluence, LightsOfOneColour)
+{
+  // A directional light and a point light of one colour (different intensities): the solve is
+  // linear in the source, so the fluence is that colour times one number per point, which the
+  // ray caster reads from one channel (vtkAVSLightVolumePass::CopyFluence).
+  const GridGeometry g = Box(16, 0.25);
+  const Vec3 colour{ 1.0, 0.6, 0.3 };
+  std::vector<Light> lights{ Light::Directional({ 0, 0, -1 }, 2.0 * colour),
+    Light::Point({ 2.0, 2.0, 2.0 }, 0.7 * colour, { 1, 0, 1 }) };
+  Vec3 common;
+  ASSERT_TRUE(CommonColour(lights, common));
+  EXPECT_NEAR(common.x, 1.0, 1e-12);
+  EXPECT_NEAR(common.y, 0.6, 1e-12);
+  EXPECT_NEAR(common.z, 0.3, 1e-12);
+  const Grid sigma = Ball(g, 6.0, 6.0);
+  const std::vector<Grid> tubes{ Grid(g, 0.7f), Grid(g, 0.4f) };
+  DiffusionSettings s;
+  s.Albedo = 0.9;
+  s.Anisotropy = 0.3;
+  s.AmbientRadius = 0.2;
+  const std::array<Grid, 3> q = DiffusionSource(sigma, lights, tubes, g, s);
+  const std::array<Grid, 3> phi = SolveDiffusion(sigma, q, s);
+  float largest = 0.0f;
+  for (float v : phi[0].Values)
+  {
+    largest = std::max(largest, v);
+  }
+  ASSERT_GT(largest, 0.0f);
+  for (std::size_t i = 0; i < phi[0].Values.size(); ++i)
+  {
+    EXPECT_NEAR(phi[1].Values[i], 0.6 * phi[0].Values[i], 1e-5 * largest);
+    EXPECT_NEAR(phi[2].Values[i], 0.3 * phi[0].Values[i], 1e-5 * largest);
+  }
+  // Not one colour: a tinted light beside them, a black one, a negative component; none.
+  lights.push_back(Light::Directional({ 1, 0, 0 }, { 1, 1, 1 }));
+  EXPECT_FALSE(CommonColour(lights, common));
+  lights.back().Irradiance = { 0, 0, 0 };
+  EXPECT_FALSE(CommonColour(lights, common));
+  lights.back().Irradiance = { -1, -0.6, -0.3 };
+  EXPECT_FALSE(CommonColour(lights, common));
+  EXPECT_FALSE(CommonColour({}, common));
+  // One light of any colour is of one colour.
+  EXPECT_TRUE(CommonColour({ Light::Directional({ 1, 0, 0 }, { 0.0, 0.5, 0.25 }) }, common));
+  EXPECT_NEAR(common.y, 1.0, 1e-12);
+  EXPECT_NEAR(common.z, 0.5, 1e-12);
 }
