@@ -292,11 +292,8 @@ bool vtkAVSRayCaster::PackAveraged(int lights, std::string& error)
   vtkAVSVolumeTextures& tx = this->Textures;
   const int texture = lights / 4;
   if (lights < 1 || lights % 4 == 0 || lights > MaximumNumberOfLights ||
-    !this->SupportsComputeShaders() || tx.HasAveragedIn(lights) || !tx.AveragedExtinction ||
-    !tx.LightVolumes[texture] ||
-    tx.LightTextureDimensions[0] != int(tx.AveragedExtinction->GetWidth()) ||
-    tx.LightTextureDimensions[1] != int(tx.AveragedExtinction->GetHeight()) ||
-    tx.LightTextureDimensions[2] != int(tx.AveragedExtinction->GetDepth()))
+    !this->SupportsComputeShaders() || tx.HasAveragedIn(lights) || !tx.LightVolumes[texture] ||
+    !tx.IsOnLightGrid(tx.AveragedExtinction))
   {
     return true; // nothing to copy, or nowhere to copy it: the rays read its own texture
   }
@@ -311,11 +308,8 @@ bool vtkAVSRayCaster::PackFluence(const std::vector<avs::Light>& lights, std::st
   avs::Vec3 colour;
   // The slot after the averaged extinction's copy, in the same texture (1, 2, 5 or 6 lights).
   if (n < 1 || n % 4 == 0 || n % 4 == 3 || n > MaximumNumberOfLights ||
-    !this->SupportsComputeShaders() || !tx.HasAveragedIn(n) || !fluence ||
-    tx.HasFluenceIn(n + 1, this->Diffuse.GetWrites()) || !avs::CommonColour(lights, colour) ||
-    tx.LightTextureDimensions[0] != int(fluence->GetWidth()) ||
-    tx.LightTextureDimensions[1] != int(fluence->GetHeight()) ||
-    tx.LightTextureDimensions[2] != int(fluence->GetDepth()))
+    !this->SupportsComputeShaders() || !tx.HasAveragedIn(n) || !tx.IsOnLightGrid(fluence) ||
+    tx.HasFluenceIn(n + 1, this->Diffuse.GetWrites()) || !avs::CommonColour(lights, colour))
   {
     return true; // current, or nowhere to copy it: the rays read the fluence's texture
   }

@@ -184,6 +184,14 @@ public:
   /// Packed on the light grid: (T0-T3), (T4-T7).
   vtkSmartPointer<vtkTextureObject> LightVolumes[NumberOfLightTextures];
   std::array<int, 3> LightTextureDimensions{ 0, 0, 0 };
+  /// Whether `texture` has the light textures' dimensions (so that a pass can copy it into one
+  /// of their channels texel for texel).
+  bool IsOnLightGrid(vtkTextureObject* texture) const
+  {
+    return texture && this->LightTextureDimensions[0] == int(texture->GetWidth()) &&
+      this->LightTextureDimensions[1] == int(texture->GetHeight()) &&
+      this->LightTextureDimensions[2] == int(texture->GetDepth());
+  }
   /// The averaged extinction on the light grid, which the light-volume pass and the ray caster
   /// sample.
   vtkSmartPointer<vtkTextureObject> AveragedExtinction;

@@ -130,28 +130,8 @@ float g_thetaCoordinate[8]; // per ray, for directional lights (their theta is c
 // An array per light (ColumnAt picks it for the constant j): read at an index known only per
 // sample, one array of all the lights' columns cost a software rasterizer about 0.2 EA frames
 // more with four lights.
-float g_column0[AVS_TABLE_COLUMN];
-#if AVS_NUMBER_OF_LIGHTS > 1
-float g_column1[AVS_TABLE_COLUMN];
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 2
-float g_column2[AVS_TABLE_COLUMN];
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 3
-float g_column3[AVS_TABLE_COLUMN];
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 4
-float g_column4[AVS_TABLE_COLUMN];
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 5
-float g_column5[AVS_TABLE_COLUMN];
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 6
-float g_column6[AVS_TABLE_COLUMN];
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 7
-float g_column7[AVS_TABLE_COLUMN];
-#endif
+#define AVS_COLUMN_ARRAY(j) float g_column##j[AVS_TABLE_COLUMN];
+AVS_FOR_EACH_LIGHT(AVS_COLUMN_ARRAY)
 #endif
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 float g_ring[AVS_RING]; // T at the last AVS_RING samples; AVS_RING is a power of two > k + 1
@@ -192,55 +172,16 @@ void FillColumn(int j, float u)
     float a =
       mix(texelFetch(u_table, ivec2(i, n), 0).r, texelFetch(u_table, ivec2(i + 1, n), 0).r, f);
     // (j a constant: one of these stores.)
-    if (j == 0) g_column0[n] = a;
-#if AVS_NUMBER_OF_LIGHTS > 1
-    if (j == 1) g_column1[n] = a;
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 2
-    if (j == 2) g_column2[n] = a;
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 3
-    if (j == 3) g_column3[n] = a;
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 4
-    if (j == 4) g_column4[n] = a;
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 5
-    if (j == 5) g_column5[n] = a;
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 6
-    if (j == 6) g_column6[n] = a;
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 7
-    if (j == 7) g_column7[n] = a;
-#endif
+#define AVS_COLUMN_STORE(k) if (j == k) g_column##k[n] = a;
+    AVS_FOR_EACH_LIGHT(AVS_COLUMN_STORE)
   }
 }
 
 // Node n of light j's column (j a constant in the unrolled loops, so this folds to one array).
 float ColumnAt(int j, int n)
 {
-#if AVS_NUMBER_OF_LIGHTS > 7
-  if (j == 7) return g_column7[n];
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 6
-  if (j == 6) return g_column6[n];
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 5
-  if (j == 5) return g_column5[n];
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 4
-  if (j == 4) return g_column4[n];
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 3
-  if (j == 3) return g_column3[n];
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 2
-  if (j == 2) return g_column2[n];
-#endif
-#if AVS_NUMBER_OF_LIGHTS > 1
-  if (j == 1) return g_column1[n];
-#endif
+#define AVS_COLUMN_READ(k) if (j == k) return g_column##k[n];
+  AVS_FOR_EACH_LIGHT(AVS_COLUMN_READ)
   return g_column0[n];
 }
 
@@ -390,20 +331,21 @@ vec3 LightSum(vec3 index, vec3 world, vec3 direction)
 #else
   vec4 tubes1 = vec4(1.0);
 #endif
-#if defined(AVS_DIFFUSE) && defined(AVS_PHI_SLOT)
-  // (Both in the fetch above.)
-  float averaged = AVS_PHI_SLOT < 4 ? tubes0[AVS_AVERAGED_SLOT & 3] : tubes1[AVS_AVERAGED_SLOT & 3];
-  g_phi = (AVS_PHI_SLOT < 4 ? tubes0[AVS_PHI_SLOT & 3] : tubes1[AVS_PHI_SLOT & 3]) * u_phiColour;
-  g_averaged = averaged;
-#elif defined(AVS_DIFFUSE)
+#if defined(AVS_DIFFUSE) && !defined(AVS_PHI_SLOT)
   vec4 diffuse = DiffuseAt(lc);
   float averaged = diffuse.a;
   g_phi = diffuse.rgb;
-  g_averaged = averaged;
 #elif defined(AVS_AVERAGED_SLOT)
   float averaged = AVS_AVERAGED_SLOT < 4 ? tubes0[AVS_AVERAGED_SLOT & 3] : tubes1[AVS_AVERAGED_SLOT & 3];
 #else
   float averaged = textureLod(u_averagedExtinction, lc, 0.0).r;
+#endif
+#ifdef AVS_PHI_SLOT
+  // (In the lights' fetch too, beside the averaged extinction.)
+  g_phi = Tube(AVS_PHI_SLOT, tubes0, tubes1) * u_phiColour;
+#endif
+#ifdef AVS_DIFFUSE
+  g_averaged = averaged;
 #endif
 #ifdef AVS_SURFACE
   g_surfaceTubes0 = tubes0;
