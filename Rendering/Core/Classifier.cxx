@@ -194,38 +194,53 @@ double Classifier::NormalisedGradient(const Vec3& g) const
   return 2.0 * Length(Mul(g, this->GradientScale));
 }
 
-SurfacePoint Classifier::SurfaceAt(const Vec3& index, double sigmaT, double blending) const
+Vec3 Classifier::SurfaceVectorAt(const Vec3& index) const
 {
-  SurfacePoint out;
-  if (!(sigmaT > 0.0))
-  {
-    return out;
-  }
-  Vec3 local;
-  double edge = 0.0;
   if (this->Surfaces)
   {
-    const bool nearest = this->Medium.Sampling == Interpolation::Nearest;
-    this->Surfaces->Sample(index, nearest, local, edge);
+    Vec3 v;
+    double edge;
+    this->Surfaces->Sample(index, this->Medium.Sampling == Interpolation::Nearest, v, edge);
+    return v;
   }
-  else
-  {
-    const Vec3 g = this->ShadingGradient(index);
-    const Vec3& h = this->Scene.Scalars.Geometry.Spacing;
-    local = { g.x / h.x, g.y / h.y, g.z / h.z };
-    edge = SurfaceEdge(this->NormalisedGradient(g));
-  }
+  const Vec3 g = this->ShadingGradient(index);
+  const Vec3& h = this->Scene.Scalars.Geometry.Spacing;
+  const Vec3 local{ g.x / h.x, g.y / h.y, g.z / h.z };
+  const double length = Length(local);
+  return length > 0.0 ? local * (SurfaceEdge(this->NormalisedGradient(g)) / length)
+                      : Vec3{ 0, 0, 0 };
+}
+
+SurfacePoint Classifier::SurfaceOf(const Vec3& v, double sigmaT, double blending) const
+{
+  SurfacePoint out;
   // Back to index units (times the spacing), then to world by the transpose of d index / d world.
-  const Vec3 g = Mul(local, this->Scene.Scalars.Geometry.Spacing);
+  const Vec3 g = Mul(v, this->Scene.Scalars.Geometry.Spacing);
   const Vec3 world{ Dot(this->ToIndex[0], g), Dot(this->ToIndex[1], g), Dot(this->ToIndex[2], g) };
   const double length = Length(world);
   if (length > 0.0)
   {
     const double alpha = 1.0 - std::exp(-sigmaT * this->UnitDistance[0]);
-    out.Probability = SurfaceProbabilityOfEdge(edge, alpha, blending);
+    out.Probability = SurfaceProbabilityOfEdge(std::min(1.0, Length(v)), alpha, blending);
     out.Normal = world * (-1.0 / length);
   }
   return out;
+}
+
+SurfacePoint Classifier::SurfaceAt(const Vec3& index, double sigmaT, double blending) const
+{
+  return sigmaT > 0.0 ? this->SurfaceOf(this->SurfaceVectorAt(index), sigmaT, blending)
+                      : SurfacePoint();
+}
+
+SurfacePoint Classifier::SurfaceAtMean(const Vec3& a,
+  const Vec3& b,
+  double sigmaT,
+  double blending) const
+{
+  return sigmaT > 0.0
+    ? this->SurfaceOf((this->SurfaceVectorAt(a) + this->SurfaceVectorAt(b)) * 0.5, sigmaT, blending)
+    : SurfacePoint();
 }
 
 Classified Classifier::FromSamples(const Vec3& index, const double s[4], double valid) const

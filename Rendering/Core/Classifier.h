@@ -74,6 +74,9 @@ public:
   /// in world space (the gradient taken there by the transpose of d index / d world); both from
   /// the surface grid where one is set (SetSurfaceGrid).
   SurfacePoint SurfaceAt(const Vec3& index, double sigmaT, double blending) const;
+  /// The same for a pair of samples at the indices a and b: from the mean of their e n (what
+  /// the GPU reads for both samples of a pair; the edge share its length).
+  SurfacePoint SurfaceAtMean(const Vec3& a, const Vec3& b, double sigmaT, double blending) const;
   /// 1 / the shading component's range (what the GPU uploads).
   double ShadingInverseRange() const { return this->InverseRange; }
   /// The component ShadingGradient differentiates (ShadingComponent, within the components).
@@ -84,6 +87,11 @@ public:
   void SetSurfaceGrid(const SurfaceGrid* grid) { this->Surfaces = grid; }
 
 private:
+  /// e n at a continuous index, local frame per spacing: from the surface grid where one is set,
+  /// else from the central differences there (unquantised).
+  Vec3 SurfaceVectorAt(const Vec3& index) const;
+  /// The surface of e n `v` for a sample with extinction `sigmaT` (its edge share |v|).
+  SurfacePoint SurfaceOf(const Vec3& v, double sigmaT, double blending) const;
   // The components at `index` (normalised by the validity) and the validity there; false when
   // the point is outside the box.
   bool Sample(const Vec3& index, double s[4], double& valid) const;

@@ -232,14 +232,26 @@ void CastRay(const VolumeScene& scene,
     return o + d * (t0 + at * dt);
   };
   // Surfaces inside the medium (SurfaceShading.h): sample s with extinction sigma as a surface
-  // (P_s, world normal), the gradient read at its light point, where its lights are (with
-  // pairs, once for both samples of a pair, as on the GPU).
+  // (P_s, world normal), the gradient read at the sample itself, or with pairs at the pair's
+  // first sample 2m for both (where the GPU's fetch of that sample brings it with its scalar).
   const bool surfaces = mode == RenderMode::AmbientScattering && p.Surface.Active();
+  auto gradientPoint = [&](int s)
+  {
+    const double at = (pairs ? s - (s & 1) : s) + 0.5;
+    return o + d * (t0 + at * dt);
+  };
   auto surfaceAt = [&](int s, double sigma)
   {
-    return surfaces
-      ? classifier.SurfaceAt(InIndexUnits(lightPoint(s), spacing), sigma, p.Surface.Blending)
-      : SurfacePoint();
+    if (!surfaces)
+      return SurfacePoint();
+    if (!pairs)
+      return classifier.SurfaceAt(
+        InIndexUnits(gradientPoint(s), spacing), sigma, p.Surface.Blending);
+    const int first = s - (s & 1), second = std::min(first + 1, n - 1);
+    return classifier.SurfaceAtMean(InIndexUnits(o + d * (t0 + (first + 0.5) * dt), spacing),
+      InIndexUnits(o + d * (t0 + (second + 0.5) * dt), spacing),
+      sigma,
+      p.Surface.Blending);
   };
   // What a sample returns of the volumetric light (1 without surfaces).
   auto volumetricShare = [&](int s, double sigma)

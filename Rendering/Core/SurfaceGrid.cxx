@@ -70,7 +70,7 @@ void SurfaceGrid::Sample(const Vec3& index, bool nearest, Vec3& direction, doubl
     }
   }
   direction = { DecodeDirection(sum[0]), DecodeDirection(sum[1]), DecodeDirection(sum[2]) };
-  edge = DecodeEdge(sum[3]);
+  edge = std::min(1.0, Length(direction));
 }
 
 void DivideByValidity(const std::vector<float>& validity,
@@ -152,12 +152,12 @@ SurfaceGrid MakeSurfaceGrid(const std::array<int, 3>& n,
               continue;
             }
             const float length = std::sqrt(squared);
-            const float inverse = 127.0f / length;
+            const float edge = 1.0f - std::exp(-length * reference);
+            const float inverse = 127.0f * edge / length;
             // 128 + round(127 n), n in [-1, 1]: the byte's rounding without a library call.
             t[0] = static_cast<std::uint8_t>(static_cast<int>(gx * inverse + 128.5f));
             t[1] = static_cast<std::uint8_t>(static_cast<int>(gy * inverse + 128.5f));
             t[2] = static_cast<std::uint8_t>(static_cast<int>(gz * inverse + 128.5f));
-            const float edge = 1.0f - std::exp(-length * reference);
             t[3] = static_cast<std::uint8_t>(static_cast<int>(255.0f * edge + 0.5f));
           }
         }

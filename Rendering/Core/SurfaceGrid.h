@@ -1,10 +1,12 @@
 // The surfaces' gradient, precomputed per voxel (SurfaceShading.h; ARCHITECTURE.md, "Surfaces
 // inside the medium"): for every lattice point the direction of the shading component's
 // gradient in the grid's local frame (VTK's central differences one voxel on either side, the
-// neighbours clamped into the lattice, divided by the spacing) and its edge share
-// 1 - exp(-gamma / gamma_0), quantised into four bytes. The GPU reads it in one RGBA8 fetch
-// per pair of samples (avs_surface.glsl), where six fetches of the scalars would make the
-// gradient on the fly; the CPU reference and the path tracer read the same bytes the same way
+// neighbours clamped into the lattice, divided by the spacing) times its edge share
+// e = 1 - exp(-gamma / gamma_0), quantised into three bytes (and e alone into a fourth, which
+// the decoding does not read: a sample's edge share is the length of the interpolated e n, so
+// that one texel can carry the scalar beside it). The GPU reads it in one fetch per pair of
+// samples (avs_surface.glsl), where six fetches of the scalars would make the gradient on the
+// fly; the CPU reference and the path tracer read the same bytes the same way
 // (Classifier::SurfaceAt), so that all of them agree.
 #ifndef avs_SurfaceGrid_h
 #define avs_SurfaceGrid_h
@@ -25,17 +27,16 @@ struct VolumeScene;
 struct SurfaceGrid
 {
   std::array<int, 3> Dimensions{ 0, 0, 0 };
-  /// RGBA per lattice point, x fastest: the unit local gradient's components as
-  /// 128 + round(127 n) (0 where the gradient vanishes) and the edge share as round(255 e).
+  /// RGBA per lattice point, x fastest: the components of e n, n the unit local gradient, as
+  /// 128 + round(127 e n) (128 where the gradient vanishes), and e as round(255 e).
   std::vector<std::uint8_t> Texels;
 
   bool Empty() const { return this->Texels.empty(); }
   std::size_t Bytes() const { return this->Texels.size(); }
 
   /// The decoded values at a continuous index clamped into the lattice, trilinear (or of the
-  /// nearest point), as a GPU texture filters them: the local gradient direction (not of unit
-  /// length where directions are interpolated; 0 where the gradient vanishes) and the edge
-  /// share.
+  /// nearest point), as a GPU texture filters them: e n interpolated (its direction the local
+  /// gradient's; 0 where the gradient vanishes) and the edge share, its length (at most 1).
   void Sample(const Vec3& index, bool nearest, Vec3& direction, double& edge) const;
 
   /// The byte of a unit-vector component and of an edge share, and back.

@@ -356,6 +356,12 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
     !(blend && frame.Blend.Mode != vtkVolumeMapper::COMPOSITE_BLEND) &&
     !(frame.Mode == avs::RenderMode::AmbientScattering &&
       vtkAVSShaderAssembly::RingSize(frame.Parameters) == 0);
+  // Surfaces whose texture holds the scalars too: each sample's fetch brings its gradient
+  // (avs_surface.glsl), where the look-ahead is the ring's (the explicit one reads samples ahead
+  // from the scalars).
+  const bool packedSurfaces = frame.Mode == avs::RenderMode::AmbientScattering &&
+    frame.Parameters.Surface.Active() && tx.SurfacesPacked && tx.Surfaces.IsUploaded() &&
+    !bricked && vtkAVSShaderAssembly::RingSize(frame.Parameters) != 0;
   this->LastSkipped = false;
   if (!this->EnsureProgram(frame.Mode,
         vtkAVSShaderAssembly::RayCastDefines(frame.Mode,
@@ -368,7 +374,8 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
           frame.LightsPerPair) +
           vtkAVSShaderOptions::ClipDefines(frame.Clip) +
           (blend ? vtkAVSShaderOptions::BlendDefines(frame.Blend) : std::string()) +
-          (bricked ? "#define AVS_BRICKED\n" : "") + (skip ? "#define AVS_SKIP\n" : "")))
+          (bricked ? "#define AVS_BRICKED\n" : "") + (skip ? "#define AVS_SKIP\n" : "") +
+          (packedSurfaces ? "#define AVS_SURFACE_PACKED\n" : "")))
   {
     error = "the ray-casting shader did not compile or link (see the log above)";
     return false;
@@ -407,6 +414,14 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   }
   tx.Classification.Bind(static_cast<unsigned int>(program->GetHandle()));
   tx.Surfaces.Bind(static_cast<unsigned int>(program->GetHandle()), layout.Nearest);
+  if (packedSurfaces)
+  {
+    // A packed scalar a * scale + shift, as the scalars' texel u of u * Scale + Shift.
+    const double scale = tx.ScalarFormat.Scale != 0.0f ? tx.ScalarFormat.Scale : 1.0f;
+    program->SetUniformf("u_packedScale", static_cast<float>(tx.SurfacesPackedScale / scale));
+    program->SetUniformf("u_packedShift",
+      static_cast<float>((tx.SurfacesPackedShift - tx.ScalarFormat.Shift) / scale));
+  }
   if (skip)
   {
     tx.Occupancy->Activate();

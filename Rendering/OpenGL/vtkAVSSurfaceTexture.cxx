@@ -31,6 +31,34 @@ void CopyBox(const avs::SurfaceGrid& grid,
     }
   }
 }
+
+// The same in 16-bit channels (a byte b as 257 b, the same normalized value), `scalars` in A.
+void CopyBoxPacked(const avs::SurfaceGrid& grid,
+  const std::vector<std::uint16_t>& scalars,
+  const std::array<int, 3>& origin,
+  const std::array<int, 3>& dimensions,
+  int z0,
+  int z1,
+  std::uint16_t* out)
+{
+  const std::array<int, 3>& n = grid.Dimensions;
+  for (int z = z0; z < z1; ++z)
+  {
+    for (int y = 0; y < dimensions[1]; ++y)
+    {
+      const std::size_t at =
+        (static_cast<std::size_t>(origin[2] + z) * n[1] + origin[1] + y) * n[0] + origin[0];
+      const std::uint8_t* in = grid.Texels.data() + 4 * at;
+      for (int x = 0; x < dimensions[0]; ++x, in += 4, out += 4)
+      {
+        out[0] = static_cast<std::uint16_t>(257 * in[0]);
+        out[1] = static_cast<std::uint16_t>(257 * in[1]);
+        out[2] = static_cast<std::uint16_t>(257 * in[2]);
+        out[3] = scalars[at + static_cast<std::size_t>(x)];
+      }
+    }
+  }
+}
 }
 
 bool vtkAVSSurfaceTexture::Upload(vtkOpenGLRenderWindow* window,
@@ -38,13 +66,19 @@ bool vtkAVSSurfaceTexture::Upload(vtkOpenGLRenderWindow* window,
   const vtkAVSBricks& bricks,
   const std::vector<vtkTextureObject*>& callerHeld,
   bool wide,
+  const std::vector<std::uint16_t>* scalars,
   std::string& error)
 {
   this->ReleaseGraphicsResources(window);
+  if (scalars && (bricks.IsSplit() || scalars->size() * 4 != grid.Texels.size()))
+  {
+    error = "the surfaces' gradient: scalars to pack that do not match it";
+    return false;
+  }
   vtkAVSTextureUpload::TexelFormat format;
-  format.InternalFormat = wide ? GL_RGBA16 : GL_RGBA8;
-  format.HostType = VTK_UNSIGNED_CHAR;
-  format.Scale = 255.0f;
+  format.InternalFormat = wide || scalars ? GL_RGBA16 : GL_RGBA8;
+  format.HostType = scalars ? VTK_UNSIGNED_SHORT : VTK_UNSIGNED_CHAR;
+  format.Scale = scalars ? 65535.0f : 255.0f;
   std::vector<vtkAVSBricks::Brick> boxes;
   if (bricks.IsSplit())
   {
@@ -65,9 +99,17 @@ bool vtkAVSSurfaceTexture::Upload(vtkOpenGLRenderWindow* window,
       held.push_back(t);
     }
     vtkSmartPointer<vtkTextureObject> texture;
-    const vtkAVSTextureUpload::SlabFill fill = [&grid, &box](int z0, int z1, void* texels)
+    const vtkAVSTextureUpload::SlabFill fill = [&grid, &box, scalars](int z0, int z1, void* texels)
     {
-      CopyBox(grid, box.Origin, box.Dimensions, z0, z1, static_cast<std::uint8_t*>(texels));
+      if (scalars)
+      {
+        CopyBoxPacked(
+          grid, *scalars, box.Origin, box.Dimensions, z0, z1, static_cast<std::uint16_t*>(texels));
+      }
+      else
+      {
+        CopyBox(grid, box.Origin, box.Dimensions, z0, z1, static_cast<std::uint8_t*>(texels));
+      }
       return static_cast<const void*>(texels);
     };
     if (!vtkAVSTextureUpload::Upload(window, texture, box.Dimensions, 4, format, fill, held, error))

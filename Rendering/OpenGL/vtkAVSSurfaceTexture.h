@@ -17,6 +17,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h" // for vtkSmartPointer<vtkTextureObject>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -36,11 +37,16 @@ public:
   /// texels with 8-bit weights (llvmpipe: the GPU's picture 52 dB from the CPU reference's with
   /// RGBA8, 64-69 dB with RGBA16) but wider ones in floats; a GPU's filter weights are 8-bit
   /// fixed point whatever the texels (NVIDIA), so there RGBA8, 4 bytes per voxel.
+  /// `scalars` (one 16-bit value per lattice point, or null): a volume not split into bricks
+  /// packed with its scalars, RGBA16 whatever `wide` says, the scalar in A (the grid's edge
+  /// share, which no one decodes, left out), so that the ray caster's one fetch per sample
+  /// brings both (AVS_SURFACE_PACKED).
   bool Upload(vtkOpenGLRenderWindow* window,
     const avs::SurfaceGrid& grid,
     const vtkAVSBricks& bricks,
     const std::vector<vtkTextureObject*>& held,
     bool wide,
+    const std::vector<std::uint16_t>* scalars,
     std::string& error);
   void ReleaseGraphicsResources(vtkWindow* window);
   bool IsUploaded() const { return this->Whole || !this->Bricks.empty(); }

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <utility>
 
 void vtkAVSVolumeTextures::SetWindow(vtkOpenGLRenderWindow* window)
@@ -519,14 +520,27 @@ bool vtkAVSVolumeTextures::UploadSurfaces(const avs::VolumeScene& scene,
   {
     this->Surfaces.ReleaseGraphicsResources(this->Window);
     this->SurfacesKey.clear();
+    this->SurfacesPacked = false;
     return true;
   }
   const avs::Classifier classifier(scene);
   const int c = classifier.ShadingComponentIndex();
+  // On a software rasterizer, whose gradient texels are 16-bit anyway, the scalars beside the
+  // gradient in 16 bits over their range, where they are one channel the classification reads
+  // alone (vtkAVSSurfaceTexture::Upload): a fetch per pair of samples less, no more memory. (A
+  // GPU keeps RGBA8, 4 bytes per voxel, and the fetch.)
+  const vtkAVSClassification::Layout& layout = this->ScalarLayout;
+  std::vector<std::uint16_t> packed;
+  // (AVS_SURFACES_PACKED=0 in the environment turns it off, for the tests.)
+  const char* packing = std::getenv("AVS_SURFACES_PACKED");
+  const bool pack = this->IsSoftwareRenderer() && (!packing || std::atoi(packing) != 0) && c == 0 &&
+    layout.ScalarChannels() == 1 && layout.Validity == 0 && layout.Gradient == 0 &&
+    !this->Bricks.IsSplit();
   std::vector<double> key{ static_cast<double>(this->ValueRangesVersion),
     static_cast<double>(c),
     classifier.ShadingInverseRange(),
-    static_cast<double>(this->Bricks.GetNumberOfBricks()) };
+    static_cast<double>(this->Bricks.GetNumberOfBricks()),
+    pack ? 1.0 : 0.0 };
   if (this->Surfaces.IsUploaded() && key == this->SurfacesKey)
   {
     return true; // made from the same scalars and range
@@ -554,8 +568,13 @@ bool vtkAVSVolumeTextures::UploadSurfaces(const avs::VolumeScene& scene,
   {
     this->Surfaces.ReleaseGraphicsResources(this->Window);
     this->SurfacesKey.clear();
+    this->SurfacesPacked = false;
     error = "the surfaces' gradient has no scalars to be made from";
     return false;
+  }
+  if (pack)
+  {
+    packed = this->PackScalars(scene, source);
   }
   std::vector<vtkTextureObject*> held = this->BudgetTextures();
   const std::vector<vtkTextureObject*> own = this->Surfaces.VolumeTextures();
@@ -564,15 +583,76 @@ bool vtkAVSVolumeTextures::UploadSurfaces(const avs::VolumeScene& scene,
       held.end(),
       [&own](vtkTextureObject* t) { return std::find(own.begin(), own.end(), t) != own.end(); }),
     held.end());
-  if (!this->Surfaces.Upload(
-        this->Window, grid, this->Bricks, held, this->IsSoftwareRenderer(), error))
+  this->SurfacesPacked = !packed.empty();
+  if (!this->Surfaces.Upload(this->Window,
+        grid,
+        this->Bricks,
+        held,
+        this->IsSoftwareRenderer(),
+        packed.empty() ? nullptr : &packed,
+        error))
   {
+    this->SurfacesPacked = false;
     this->SurfacesKey.clear();
     return false;
   }
   this->SurfacesKey = std::move(key);
   this->NotePeak();
   return true;
+}
+
+std::vector<std::uint16_t> vtkAVSVolumeTextures::PackScalars(const avs::VolumeScene& scene,
+  const ScalarSource& source)
+{
+  const avs::GridGeometry& g = scene.Scalars.Geometry;
+  const std::size_t slice = static_cast<std::size_t>(g.Dimensions[0]) * g.Dimensions[1];
+  const std::size_t count = slice * static_cast<std::size_t>(std::max(0, g.Dimensions[2]));
+  std::vector<float> read; // (where the scene holds no values)
+  const float* values = nullptr;
+  if (scene.Scalars.Values.size() == count)
+  {
+    values = scene.Scalars.Values.data();
+  }
+  else if (source.Read && count > 0)
+  {
+    read.resize(count);
+    for (std::size_t first = 0; first < count; first += slice)
+    {
+      source.Read(0, first, first + slice, read.data() + first);
+    }
+    values = read.data();
+  }
+  if (!values)
+  {
+    return {};
+  }
+  float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const float v = values[i];
+    if (std::isfinite(v))
+    {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  }
+  if (!(lo <= hi))
+  {
+    lo = hi = 0.0f;
+  }
+  const double range = static_cast<double>(hi) - lo;
+  const double scale = range > 0.0 ? 65535.0 / range : 0.0;
+  std::vector<std::uint16_t> packed(count, 0);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const double v = values[i];
+    packed[i] = std::isfinite(v)
+      ? static_cast<std::uint16_t>(std::clamp(std::floor((v - lo) * scale + 0.5), 0.0, 65535.0))
+      : 0;
+  }
+  this->SurfacesPackedScale = range;
+  this->SurfacesPackedShift = lo;
+  return packed;
 }
 
 bool vtkAVSVolumeTextures::UploadOccupancy(const avs::VolumeScene& scene, std::string& error)

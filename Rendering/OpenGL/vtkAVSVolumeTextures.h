@@ -121,6 +121,9 @@ public:
     bool active,
     const ScalarSource& source,
     std::string& error);
+  /// The scalars (one component) as 16-bit normalized integers over their finite range, which
+  /// SurfacesPackedScale and SurfacesPackedShift then map back; 0 at NaN.
+  std::vector<std::uint16_t> PackScalars(const avs::VolumeScene& scene, const ScalarSource& source);
   bool UploadAveraged(const avs::Grid& averaged, std::string& error);
   bool UploadLightVolumes(const std::vector<avs::Grid>& lights, std::string& error);
   bool UploadOcclusion(const avs::Grid& occlusion, std::string& error);
@@ -177,6 +180,12 @@ public:
   /// The surfaces' gradient (UploadSurfaces) and what it was made from.
   vtkAVSSurfaceTexture Surfaces;
   std::vector<double> SurfacesKey;
+  /// Whether the surfaces' texture holds the scalars in A (one channel, no gradient opacity or
+  /// validity, not split into bricks; vtkAVSSurfaceTexture::Upload), and how: a scalar is
+  /// A * SurfacesPackedScale + SurfacesPackedShift, A normalized.
+  bool SurfacesPacked = false;
+  double SurfacesPackedScale = 1.0;
+  double SurfacesPackedShift = 0.0;
   /// The layout the scalars were uploaded with (vtkAVSClassification::Layout), and their texel
   /// format (its Scale and Shift map the texels back to data values in the shaders).
   vtkAVSClassification::Layout ScalarLayout;

@@ -274,15 +274,6 @@ void SurfaceLights(vec3 world, vec3 direction)
   g_surfaceSpecular = specular * (shadow * k.z * (k.w + 2.0) / (2.0 * PI));
 }
 
-// A sample's light point (index `index`, world `world`): the gradient there and the direct
-// light a surface there reflects. Once per pair of samples where the lights are
-// (AVS_LIGHTS_PER_PAIR), for both, as the CPU reference does.
-void SurfacePoint(vec3 index, vec3 world, vec3 direction)
-{
-  SurfaceGradientAt(VolumeCoordinate(index), -direction);
-  SurfaceLights(world, direction);
-}
-
 // The direct light a sample (colour `color`, P_s from SurfaceShareFor) reflects per unit of T
 // (1 - e^(-sigma dt)): P_s (c D + S) of SurfaceLights.
 vec3 SurfaceReflected(vec3 color)
@@ -371,6 +362,34 @@ float LightT(int s)
   return t0 + (float(s) + offset) * dtWorld;
 #endif
 }
+
+#ifdef AVS_SURFACE
+// The surfaces' texel of sample s (of this ray; brickFirst + s of the unsplit one): with
+// AVS_LIGHTS_PER_PAIR the mean of its pair's two samples' (the unsplit ray's 2m and 2m + 1; 2m
+// alone where the ray ends there), else its own, as the CPU reference reads them
+// (Classifier::SurfaceAtMean). (With AVS_SURFACE_PACKED the pairs' own fetches serve instead.)
+vec4 SurfaceTexelOf(int s)
+{
+#ifdef AVS_LIGHTS_PER_PAIR
+  int first = s - ((s + g_parity) & 1);
+#else
+  int first = s;
+#endif
+  float t = t0 + (float(first) + offset) * dtWorld;
+  vec4 a = textureLod(u_surfaces, VolumeCoordinate(io + t * id), 0.0);
+#ifdef AVS_LIGHTS_PER_PAIR
+#ifdef AVS_BRICKED
+  bool alone = brickFirst + first + 1 >= raySteps;
+#else
+  bool alone = first + 1 >= raySteps;
+#endif
+  vec4 b = textureLod(u_surfaces, VolumeCoordinate(io + (t + dtWorld) * id), 0.0);
+  return alone ? a : 0.5 * (a + b);
+#else
+  return a;
+#endif
+}
+#endif
 
 // sigma_t(x') c(x') sum_j E_j A(theta_j; r sigma~_t) for `classified` = (c, sigma_t) at x', the
 // lights read at the ray parameter tl (LightT).
@@ -486,8 +505,14 @@ void EffectLeap(int from, int to)
       float tp = LightT(max(pair, 0));
       g_pairLight = LightSum(io + tp * id, origin + tp * direction, direction);
 #ifdef AVS_SURFACE
-      // Surfaces: the pair's gradient and reflected light, at the same point.
-      SurfacePoint(io + tp * id, origin + tp * direction, direction);
+      // Surfaces: the pair's gradient (at its first sample) and reflected light (at its lights).
+#ifdef AVS_SURFACE_PACKED
+      // (From the pair's own fetches, not bricked: pair >= 0, and sample B is A at the end.)
+      SurfaceGradientFrom(0.5 * (voxelA + voxelB), -direction);
+#else
+      SurfaceGradientFrom(SurfaceTexelOf(pair), -direction);
+#endif
+      SurfaceLights(origin + tp * direction, direction);
 #endif
 #ifdef AVS_DIFFUSE_ANISOTROPIC
       // dphi/dt from the pair before (two steps back; 0 at the unsplit ray's first pair), its
@@ -554,9 +579,9 @@ void EffectLeap(int from, int to)
       vec3 phi = ScatteredFluence(diffuse.rgb, diffuse.a, i, dt);
 #endif
 #ifdef AVS_SURFACE
-      // Surfaces reflect the diffuse field too (avs_surface.glsl), the gradient at the light
-      // point.
-      SurfaceAt(VolumeCoordinate(io + tl * id), here.a, -direction);
+      // Surfaces reflect the diffuse field too (avs_surface.glsl), the gradient SurfaceTexelOf's.
+      SurfaceGradientFrom(SurfaceTexelOf(i), -direction);
+      SurfaceShareFor(here.a);
       L += T * (1.0 - extinction) * u_albedo * (1.0 / (4.0 * PI)) * DiffuseFieldColor(here.rgb) *
         phi;
 #else
@@ -571,7 +596,8 @@ void EffectLeap(int from, int to)
     {
       float ts = LightT(i);
       LightSum(io + ts * id, origin + ts * direction, direction); // (for its light values)
-      SurfacePoint(io + ts * id, origin + ts * direction, direction);
+      SurfaceGradientFrom(SurfaceTexelOf(i), -direction);
+      SurfaceLights(origin + ts * direction, direction);
       SurfaceShareFor(here.a);
       L += T * (1.0 - extinction) * SurfaceReflected(here.rgb);
     }
@@ -593,10 +619,11 @@ void EffectLeap(int from, int to)
     {
       float lagged = mix(newer, older, g_lagFraction);
 #if defined(AVS_SURFACE) && !defined(AVS_SURFACE_PER_PAIR)
-      // Surfaces: the share of the volumetric light the sample returns, the gradient at its
-      // light point (its pair's, from the pair's snippet; else its own, here). (Per pair: in
-      // g_pairLight already.)
-#ifndef AVS_SAMPLE_PAIRS
+      // Surfaces: the share of the volumetric light the sample returns, the gradient its pair's
+      // (from the pair's snippet) or its own (here). (Per pair: in g_pairLight already.)
+#if defined(AVS_SURFACE_PACKED) && !defined(AVS_SAMPLE_PAIRS)
+      SurfaceGradientFrom(voxel, -direction); // (the sample's texel)
+#elif !defined(AVS_SAMPLE_PAIRS)
       SurfaceGradientAt(coordinate, -direction);
 #endif
       SurfaceShareFor(here.a);
@@ -668,7 +695,8 @@ void EffectLeap(int from, int to)
         if (s1.a > 0.0)
         {
 #ifdef AVS_SURFACE
-          SurfaceAt(VolumeCoordinate(io + LightT(j) * id), s1.a, -direction);
+          SurfaceGradientFrom(SurfaceTexelOf(j), -direction);
+          SurfaceShareFor(s1.a);
           L += dt * VolumetricShare() * InScattered(s1, LightT(j));
 #else
           L += dt * InScattered(s1, LightT(j));
@@ -689,7 +717,8 @@ void EffectLeap(int from, int to)
       if (s2.a > 0.0)
       {
 #ifdef AVS_SURFACE
-        SurfaceAt(VolumeCoordinate(io + LightT(i + g_lag + 1) * id), s2.a, -direction);
+        SurfaceGradientFrom(SurfaceTexelOf(i + g_lag + 1), -direction);
+        SurfaceShareFor(s2.a);
         lagged *= VolumetricShare();
 #endif
         L += lagged * dt * InScattered(s2, LightT(i + g_lag + 1));

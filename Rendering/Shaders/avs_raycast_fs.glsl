@@ -87,6 +87,7 @@ vec3 origin = vec3(0.0), direction = vec3(0.0); // world ray
 vec3 io = vec3(0.0), id = vec3(0.0);            // index(t) = io + t * id for world distance t
 float t0 = 0.0, dtWorld = 0.0, dt = 0.0, offset = 0.0;
 int steps = 0;
+int raySteps = 0; // the unsplit ray's samples (a brick's pass keeps only its own in steps)
 #ifdef AVS_BRICKED
 int brickFirst = 0;
 #endif
@@ -111,8 +112,14 @@ vec4 ClassifySample(int i, out vec4 voxel)
   float t = t0 + (float(i) + offset) * dtWorld;
   vec3 index = io + t * id;
   vec3 coordinate = firstCoordinate + float(i) * stepCoordinate;
+#ifdef AVS_SURFACE_PACKED
+  // (The surfaces' texel, which holds the scalar in A: `voxel` is that texel.)
+  voxel = textureLod(u_surfaces, coordinate, 0.0);
+  vec4 here = Classify(PackedScalar(voxel), coordinate);
+#else
   voxel = textureLod(AVS_VOLUME_TEXTURE, coordinate, 0.0);
   vec4 here = Classify(voxel, coordinate);
+#endif
   AVS_CROP(here, index);
   return here;
 }
@@ -179,6 +186,7 @@ void main()
   // Steps of at most the sample distance in data units; dtWorld along the world ray.
   float dataPerWorld = length(id * u_spacing);
   steps = max(1, int(ceil((t1 - t0) * dataPerWorld / u_sampleDistance - 1e-4)));
+  raySteps = steps;
   dtWorld = (t1 - t0) / float(steps);
   dt = dtWorld * dataPerWorld;
   offset = u_jitter == 1 ? Hash(gl_FragCoord.xy) : 0.5;

@@ -10,7 +10,7 @@
 // their classification and lights. P_s is the edge share alone at blending 0; with
 // AVS_SURFACE_BLENDED (above 0) it depends on the sample's opacity too.
 #ifdef AVS_SURFACE
-uniform sampler3D u_surfaces;        // RGB: 128 + 127 n (bytes), n the unit local gradient; A: e
+uniform sampler3D u_surfaces;        // RGB: 128 + 127 e n (bytes), n the unit local gradient
 uniform float u_surfaceBlending;     // B in [0, 2]
 uniform vec4 u_surfaceCoefficients;  // k_a, k_d, k_s, p (resolved: k_a + k_d + k_s <= 1)
 uniform int u_surfaceTwoSided;       // the renderer's TwoSidedLighting
@@ -32,17 +32,33 @@ float SurfaceProbability(float edge, float alpha)
 }
 #endif
 
-// The gradient at volume texture coordinate `coordinate`: the edge share, the normal and
-// whether the surface reflects towards `toViewer`, into g_surfaceEdge, g_surfaceNormal,
-// g_surfaceFacing.
-void SurfaceGradientAt(vec3 coordinate, vec3 toViewer)
+#ifdef AVS_SURFACE_PACKED
+// The texture holds the scalars in A too (vtkAVSSurfaceTexture), so that a sample's one fetch
+// (ClassifySample) brings its gradient: the scalars' texel value of a texel t.
+uniform float u_packedScale;
+uniform float u_packedShift;
+vec4 PackedScalar(vec4 t)
 {
-  vec4 t = textureLod(u_surfaces, coordinate, 0.0);
-  vec3 world = u_surfaceToWorld * (t.xyz * (255.0 / 127.0) - 128.0 / 127.0);
+  return vec4(t.a * u_packedScale + u_packedShift);
+}
+#endif
+
+// The gradient of a texel `t` of u_surfaces: the edge share, the normal and whether the surface
+// reflects towards `toViewer`, into g_surfaceEdge, g_surfaceNormal, g_surfaceFacing.
+void SurfaceGradientFrom(vec4 t, vec3 toViewer)
+{
+  vec3 local = t.xyz * (255.0 / 127.0) - 128.0 / 127.0;
+  vec3 world = u_surfaceToWorld * local;
   // (Where the gradient vanishes around, e is 0 and the normal nothing.)
-  g_surfaceEdge = t.w;
+  g_surfaceEdge = min(1.0, length(local));
   g_surfaceNormal = world * -inversesqrt(max(dot(world, world), 1e-30));
   g_surfaceFacing = u_surfaceTwoSided == 1 || dot(g_surfaceNormal, toViewer) > 0.0;
+}
+
+// The same at volume texture coordinate `coordinate`.
+void SurfaceGradientAt(vec3 coordinate, vec3 toViewer)
+{
+  SurfaceGradientFrom(textureLod(u_surfaces, coordinate, 0.0), toViewer);
 }
 
 // P_s of a sample with sigma_t `sigma` at the last SurfaceGradientAt's gradient, into

@@ -212,7 +212,8 @@ TEST(SurfaceGrid, BytesRoundTrip)
 TEST(SurfaceGrid, RampHasItsDirectionAndEdgeShare)
 {
   // Inside, the central differences of a linear field are its gradient; at a face they are
-  // one-sided, halved (VTK's clamp). Directions to within a byte, edge shares within one.
+  // one-sided, halved (VTK's clamp). The bytes hold e n (the edge share times the unit
+  // direction), each component to within a byte; the edge share read back is its length.
   const Vec3 a{ 30.0, -20.0, 10.0 };
   const double range = 1000.0;
   const VolumeScene scene = Ramp(a, range);
@@ -224,12 +225,15 @@ TEST(SurfaceGrid, RampHasItsDirectionAndEdgeShare)
     Vec3 direction;
     double edge;
     grid.Sample(index, false, direction, edge);
-    const Vec3 unit = g * (1.0 / Length(g));
+    const double e = SurfaceEdge(mean * Length(g) / range);
+    ASSERT_GT(e, 0.2); // (a ramp whose direction the bytes resolve)
+    const Vec3 scaled = g * (e / Length(g));
     for (int c = 0; c < 3; ++c)
     {
-      EXPECT_NEAR(direction[c], unit[c], 0.6 / 127.0) << "component " << c;
+      EXPECT_NEAR(direction[c], scaled[c], 0.6 / 127.0) << "component " << c;
     }
-    EXPECT_NEAR(edge, SurfaceEdge(mean * Length(g) / range), 0.6 / 255.0);
+    EXPECT_NEAR(edge, e, std::sqrt(3.0) * 0.6 / 127.0);
+    EXPECT_DOUBLE_EQ(edge, Length(direction));
   };
   check({ 4, 3, 2 }, a);
   check({ 4.5, 3.25, 2.75 }, a); // interpolated between interior points
