@@ -8,6 +8,7 @@
 #include "vtkObject.h" // for vtkGenericWarningMacro
 
 #include <algorithm>
+#include <cmath>
 
 namespace
 {
@@ -147,6 +148,14 @@ std::string vtkAVSShaderAssembly::RayCastDefines(avs::RenderMode mode,
     if (p.Surface.Blending > 0.0)
     {
       defines += "#define AVS_SURFACE_BLENDED\n";
+    }
+    // An integer specular power (VTK's default 10) by squaring, which costs a software
+    // rasterizer less than exp2 and log2.
+    const double power = p.Surface.SpecularPower;
+    if (power >= 0.0 && power <= 128.0 && power == std::floor(power))
+    {
+      defines +=
+        "#define AVS_SURFACE_SPECULAR_POWER " + std::to_string(static_cast<int>(power)) + "\n";
     }
   }
   // Directional lights read A from a per-ray column of the table (see avs_as_effect.glsl) when

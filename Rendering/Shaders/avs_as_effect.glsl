@@ -229,6 +229,23 @@ float g_surfaceAveraged = 0.0;
 vec3 g_surfaceDiffuse = vec3(0.0);
 vec3 g_surfaceSpecular = vec3(0.0);
 
+// (r.v)^p for r.v >= 0: with AVS_SURFACE_SPECULAR_POWER (an integer p, at most 128) by
+// squaring, straight-line code the compiler folds for the constant p (the bits of p choose the
+// factors; the squares nothing uses go).
+float SpecularLobe(float rv)
+{
+#ifdef AVS_SURFACE_SPECULAR_POWER
+  const int p = AVS_SURFACE_SPECULAR_POWER;
+  float b1 = rv, b2 = b1 * b1, b4 = b2 * b2, b8 = b4 * b4, b16 = b8 * b8, b32 = b16 * b16;
+  float b64 = b32 * b32, b128 = b64 * b64;
+  return ((p & 1) != 0 ? b1 : 1.0) * ((p & 2) != 0 ? b2 : 1.0) * ((p & 4) != 0 ? b4 : 1.0) *
+    ((p & 8) != 0 ? b8 : 1.0) * ((p & 16) != 0 ? b16 : 1.0) * ((p & 32) != 0 ? b32 : 1.0) *
+    ((p & 64) != 0 ? b64 : 1.0) * ((p & 128) != 0 ? b128 : 1.0);
+#else
+  return exp2(u_surfaceCoefficients.w * log2(max(rv, 1e-30)));
+#endif
+}
+
 // Light j's (a constant) share of them, the light at `world` with the tube transmittance
 // LightSum read there: E_j T_j (n.l) and E_j T_j (n.l) max(0, r.v)^p, with n the normal turned
 // to the viewer `v` and r.v = 2 (n.l)(n.v) - l.v (SurfaceReflectance's terms, the BRDF's
@@ -247,7 +264,7 @@ void SurfaceLight(int j,
   float rv = max(2.0 * nl * nv + dot(propagation, v), 0.0);
   vec3 arriving = irradiance * (Tube(j, g_surfaceTubes0, g_surfaceTubes1) * nl);
   diffuse += arriving;
-  specular += arriving * exp2(u_surfaceCoefficients.w * log2(max(rv, 1e-30)));
+  specular += arriving * SpecularLobe(rv);
 }
 
 // The direct light a surface reflects at a sample's light point `world` (where LightSum read
