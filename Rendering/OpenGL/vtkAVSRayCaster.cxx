@@ -359,9 +359,11 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   // Surfaces whose texture holds the scalars too: each sample's fetch brings its gradient
   // (avs_surface.glsl), where the look-ahead is the ring's (the explicit one reads samples ahead
   // from the scalars).
+  // (The layout checked again: the texture was packed for the scalars' layout at its upload.)
   const bool packedSurfaces = frame.Mode == avs::RenderMode::AmbientScattering &&
     frame.Parameters.Surface.Active() && tx.SurfacesPacked && tx.Surfaces.IsUploaded() &&
-    !bricked && vtkAVSShaderAssembly::RingSize(frame.Parameters) != 0;
+    !bricked && vtkAVSShaderAssembly::RingSize(frame.Parameters) != 0 &&
+    layout.ScalarChannels() == 1 && layout.Validity == 0 && layout.Gradient == 0;
   this->LastSkipped = false;
   if (!this->EnsureProgram(frame.Mode,
         vtkAVSShaderAssembly::RayCastDefines(frame.Mode,

@@ -522,7 +522,8 @@ void EffectLeap(int from, int to)
       float tp = LightT(max(pair, 0));
       g_pairLight = LightSum(io + tp * id, origin + tp * direction, direction);
 #ifdef AVS_SURFACE
-      // Surfaces: the pair's gradient (at its first sample) and reflected light (at its lights).
+      // Surfaces: the pair's gradient (the mean of its samples' texels) and reflected light (at
+      // its lights).
 #ifdef AVS_SURFACE_PACKED
       // (From the pair's own fetches, not bricked: pair >= 0, and sample B is A at the end.)
       SurfaceGradientFrom(0.5 * (voxelA + voxelB), -direction);
