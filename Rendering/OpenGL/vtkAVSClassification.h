@@ -38,6 +38,12 @@ public:
     bool Nearest = false;
     /// Channels of the volume texture: the components, and the validity when it is with them.
     int ScalarChannels() const { return this->Components + (this->Validity == 1 ? 1 : 0); }
+    /// Whether the volume texture is one channel of scalars that the classification reads alone
+    /// (no validity, no gradient opacity): what may ride beside the surfaces' gradient.
+    bool ScalarAlone() const
+    {
+      return this->ScalarChannels() == 1 && this->Validity == 0 && this->Gradient == 0;
+    }
     std::string Defines() const;
     bool operator==(const Layout& o) const
     {

@@ -362,8 +362,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
   // (The layout checked again: the texture was packed for the scalars' layout at its upload.)
   const bool packedSurfaces = frame.Mode == avs::RenderMode::AmbientScattering &&
     frame.Parameters.Surface.Active() && tx.SurfacesPacked && tx.Surfaces.IsUploaded() &&
-    !bricked && vtkAVSShaderAssembly::RingSize(frame.Parameters) != 0 &&
-    layout.ScalarChannels() == 1 && layout.Validity == 0 && layout.Gradient == 0;
+    !bricked && vtkAVSShaderAssembly::RingSize(frame.Parameters) != 0 && layout.ScalarAlone();
   this->LastSkipped = false;
   if (!this->EnsureProgram(frame.Mode,
         vtkAVSShaderAssembly::RayCastDefines(frame.Mode,

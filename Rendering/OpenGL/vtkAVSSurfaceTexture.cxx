@@ -32,31 +32,22 @@ void CopyBox(const avs::SurfaceGrid& grid,
   }
 }
 
-// The same in 16-bit channels (a byte b as 257 b, the same normalized value), `scalars` in A.
-void CopyBoxPacked(const avs::SurfaceGrid& grid,
+// The whole grid's texels of slices [z0, z1) in 16-bit channels (a byte b as 257 b, the same
+// normalized value), `scalars` in A, into `out` (a packed texture is never split into bricks).
+void CopySlicesPacked(const avs::SurfaceGrid& grid,
   const std::vector<std::uint16_t>& scalars,
-  const std::array<int, 3>& origin,
-  const std::array<int, 3>& dimensions,
   int z0,
   int z1,
   std::uint16_t* out)
 {
-  const std::array<int, 3>& n = grid.Dimensions;
-  for (int z = z0; z < z1; ++z)
+  const std::size_t slice = static_cast<std::size_t>(grid.Dimensions[0]) * grid.Dimensions[1];
+  const std::uint8_t* in = grid.Texels.data() + 4 * slice * z0;
+  for (std::size_t i = slice * z0; i < slice * z1; ++i, in += 4, out += 4)
   {
-    for (int y = 0; y < dimensions[1]; ++y)
-    {
-      const std::size_t at =
-        (static_cast<std::size_t>(origin[2] + z) * n[1] + origin[1] + y) * n[0] + origin[0];
-      const std::uint8_t* in = grid.Texels.data() + 4 * at;
-      for (int x = 0; x < dimensions[0]; ++x, in += 4, out += 4)
-      {
-        out[0] = static_cast<std::uint16_t>(257 * in[0]);
-        out[1] = static_cast<std::uint16_t>(257 * in[1]);
-        out[2] = static_cast<std::uint16_t>(257 * in[2]);
-        out[3] = scalars[at + static_cast<std::size_t>(x)];
-      }
-    }
+    out[0] = static_cast<std::uint16_t>(257 * in[0]);
+    out[1] = static_cast<std::uint16_t>(257 * in[1]);
+    out[2] = static_cast<std::uint16_t>(257 * in[2]);
+    out[3] = scalars[i];
   }
 }
 }
@@ -103,8 +94,7 @@ bool vtkAVSSurfaceTexture::Upload(vtkOpenGLRenderWindow* window,
     {
       if (scalars)
       {
-        CopyBoxPacked(
-          grid, *scalars, box.Origin, box.Dimensions, z0, z1, static_cast<std::uint16_t*>(texels));
+        CopySlicesPacked(grid, *scalars, z0, z1, static_cast<std::uint16_t*>(texels));
       }
       else
       {

@@ -534,8 +534,7 @@ bool vtkAVSVolumeTextures::UploadSurfaces(const avs::VolumeScene& scene,
   // (AVS_SURFACES_PACKED=0 in the environment turns it off, for the tests.)
   const char* packing = std::getenv("AVS_SURFACES_PACKED");
   const bool pack = this->IsSoftwareRenderer() && (!packing || std::atoi(packing) != 0) && c == 0 &&
-    layout.ScalarChannels() == 1 && layout.Validity == 0 && layout.Gradient == 0 &&
-    !this->Bricks.IsSplit();
+    layout.ScalarAlone() && !this->Bricks.IsSplit();
   std::vector<double> key{ static_cast<double>(this->ValueRangesVersion),
     static_cast<double>(c),
     classifier.ShadingInverseRange(),
@@ -604,36 +603,21 @@ bool vtkAVSVolumeTextures::UploadSurfaces(const avs::VolumeScene& scene,
 std::vector<std::uint16_t> vtkAVSVolumeTextures::PackScalars(const avs::VolumeScene& scene,
   const ScalarSource& source)
 {
+  // The range from the value ranges UploadScalars took of the same scalars (cells whose points
+  // are all NaN have Low > High).
   const avs::GridGeometry& g = scene.Scalars.Geometry;
-  const std::size_t slice = static_cast<std::size_t>(g.Dimensions[0]) * g.Dimensions[1];
-  const std::size_t count = slice * static_cast<std::size_t>(std::max(0, g.Dimensions[2]));
-  std::vector<float> read; // (where the scene holds no values)
-  const float* values = nullptr;
-  if (scene.Scalars.Values.size() == count)
-  {
-    values = scene.Scalars.Values.data();
-  }
-  else if (source.Read && count > 0)
-  {
-    read.resize(count);
-    for (std::size_t first = 0; first < count; first += slice)
-    {
-      source.Read(0, first, first + slice, read.data() + first);
-    }
-    values = read.data();
-  }
-  if (!values)
+  const avs::ValueRangeGrid& ranges = this->ValueRanges;
+  if (ranges.Empty() || ranges.Dimensions() != g.Dimensions)
   {
     return {};
   }
   float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-  for (std::size_t i = 0; i < count; ++i)
+  for (std::size_t cell = 0; cell < ranges.NumberOfCells(); ++cell)
   {
-    const float v = values[i];
-    if (std::isfinite(v))
+    if (ranges.Low(cell, 0) <= ranges.High(cell, 0))
     {
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
+      lo = std::min(lo, ranges.Low(cell, 0));
+      hi = std::max(hi, ranges.High(cell, 0));
     }
   }
   if (!(lo <= hi))
@@ -642,13 +626,31 @@ std::vector<std::uint16_t> vtkAVSVolumeTextures::PackScalars(const avs::VolumeSc
   }
   const double range = static_cast<double>(hi) - lo;
   const double scale = range > 0.0 ? 65535.0 / range : 0.0;
-  std::vector<std::uint16_t> packed(count, 0);
-  for (std::size_t i = 0; i < count; ++i)
+  // Slice by slice, from the scene's values or, where it holds none, through `source`.
+  const std::size_t slice = static_cast<std::size_t>(g.Dimensions[0]) * g.Dimensions[1];
+  const std::size_t count = slice * static_cast<std::size_t>(std::max(0, g.Dimensions[2]));
+  const bool onHost = scene.Scalars.Values.size() == count;
+  if (!onHost && !source.Read)
   {
-    const double v = values[i];
-    packed[i] = std::isfinite(v)
-      ? static_cast<std::uint16_t>(std::clamp(std::floor((v - lo) * scale + 0.5), 0.0, 65535.0))
-      : 0;
+    return {};
+  }
+  std::vector<float> read(onHost ? 0 : slice);
+  std::vector<std::uint16_t> packed(count, 0);
+  for (std::size_t first = 0; first < count; first += slice)
+  {
+    const float* values = scene.Scalars.Values.data() + first;
+    if (!onHost)
+    {
+      source.Read(0, first, first + slice, read.data());
+      values = read.data();
+    }
+    for (std::size_t i = 0; i < slice; ++i)
+    {
+      const double v = values[i];
+      packed[first + i] = std::isfinite(v)
+        ? static_cast<std::uint16_t>(std::clamp(std::floor((v - lo) * scale + 0.5), 0.0, 65535.0))
+        : 0;
+    }
   }
   this->SurfacesPackedScale = range;
   this->SurfacesPackedShift = lo;
