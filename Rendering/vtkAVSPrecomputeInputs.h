@@ -33,6 +33,9 @@ struct vtkAVSPrecomputeInputs
   int DataVersion = 0;
   int OpacityVersion = 0;
   bool PrecomputeOnGPU = true; ///< the mapper's PrecomputeOnGPU
+  /// The mapper's EmptySpaceSkipping: the light-volume pass on the GPU leaves out the tiles of
+  /// the light grid that nothing reads near the cells that may hold material.
+  bool SkipEmptySpace = true;
   /// An interactive frame: lights that follow the camera keep the volume of their last pose.
   bool Interactive = false;
   vtkMatrix4x4* WorldToData = nullptr;

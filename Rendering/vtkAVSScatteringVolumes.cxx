@@ -25,6 +25,14 @@ avs::Vec3 Transform(vtkMatrix4x4* m, const avs::Vec3& p)
   m->MultiplyPoint(in, out);
   return { out[0] / out[3], out[1] / out[3], out[2] / out[3] };
 }
+
+// Whether a light volume marched over the tiles chosen by `built` (vtkAVSScatteringVolumes'
+// LightState::TilesKey) holds those that `needed` chooses: all of them, or those of the same
+// occupancy with the diffusion's reach where it is needed.
+bool CoversTiles(const std::array<int, 3>& built, const std::array<int, 3>& needed)
+{
+  return built[1] == 0 || (needed[1] == 1 && built[0] == needed[0] && built[2] >= needed[2]);
+}
 } // namespace
 
 bool vtkAVSScatteringVolumes::Update(const vtkAVSPrecomputeInputs& inputs,
@@ -194,6 +202,14 @@ bool vtkAVSScatteringVolumes::UpdateLights(const vtkAVSPrecomputeInputs& inputs,
   bool changed = this->Lights.size() != n || !this->LightVolumesUploaded;
   rebuilt = changed; // a light volume was rebuilt (on the CPU or the GPU)
   this->Lights.resize(n);
+  // On the GPU the tiles of the light grid that something reads are marched (a light volume
+  // marched over tiles chosen otherwise is not current); a piece of a distributed volume
+  // marches the whole grid, which every rank's diffusion reads.
+  const bool skipEmpty = inputs.SkipEmptySpace && !inputs.LitAsPiece;
+  const bool diffusion = rp.Model == avs::ScatteringModel::Extended;
+  const std::array<int, 3> tilesKey{ gpu && skipEmpty ? caster.GetOccupancyVersion() : -2,
+    gpu && skipEmpty ? 1 : 0,
+    gpu && skipEmpty && diffusion ? 1 : 0 };
   for (std::size_t j = 0; j < n; ++j)
   {
     avs::Light dataLight = worldLights[j];
@@ -204,7 +220,7 @@ bool vtkAVSScatteringVolumes::UpdateLights(const vtkAVSPrecomputeInputs& inputs,
       avs::TubeLawFor(rp.Model == avs::ScatteringModel::Extended, dataLight.Type);
     const bool current = state.Built && state.AveragedVersion == this->AveragedVersion &&
       state.SliceVersion == this->SliceVersion && state.Radius == rp.AmbientRadius &&
-      state.Law == law;
+      state.Law == law && CoversTiles(state.TilesKey, tilesKey);
     // While interacting, a light that follows the camera keeps the volume of its last pose (the
     // still frame rebuilds it): only the pose is stale, and it moves with every camera move.
     const bool keep = inputs.Interactive && current && (*inputs.FollowsCamera)[j] &&
@@ -214,8 +230,10 @@ bool vtkAVSScatteringVolumes::UpdateLights(const vtkAVSPrecomputeInputs& inputs,
       inputs.Progress(static_cast<double>(j) / n);
       if (gpu)
       {
-        if (!caster.ComputeLightVolume(
-              static_cast<int>(j), lightGrid, dataLight, rp.AmbientRadius, law, error))
+        if (!caster.UpdateLightTiles(
+              lightGrid, dataLight, rp.AmbientRadius, diffusion, skipEmpty, error) ||
+          !caster.ComputeLightVolume(
+            static_cast<int>(j), lightGrid, dataLight, rp.AmbientRadius, law, error))
         {
           return false;
         }
@@ -239,6 +257,7 @@ bool vtkAVSScatteringVolumes::UpdateLights(const vtkAVSPrecomputeInputs& inputs,
       state.SliceVersion = this->SliceVersion;
       state.Radius = rp.AmbientRadius;
       state.Law = law;
+      state.TilesKey = tilesKey;
       state.Built = true;
       rebuilt = true;
       ++this->LightVolumeRebuilds;

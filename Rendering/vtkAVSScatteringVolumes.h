@@ -87,6 +87,9 @@ private:
     int SliceVersion = -1;
     double Radius = -1.0;
     avs::TubeLaw Law = avs::TubeLaw::Forward;
+    /// What the light grid's tiles it was marched over were chosen from (GPU path): the
+    /// occupancy's version, whether empty space was left out, whether the diffusion's reach was.
+    std::array<int, 3> TilesKey{ -1, -1, -1 };
     bool Built = false;
     avs::Grid Volume; ///< CPU path only
   };

@@ -335,6 +335,7 @@ bool vtkAVSVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, bool 
   inputs.DataVersion = in.DataVersion;
   inputs.OpacityVersion = in.OpacityVersion;
   inputs.PrecomputeOnGPU = this->PrecomputeOnGPU != 0;
+  inputs.SkipEmptySpace = this->EmptySpaceSkipping != 0;
   inputs.Interactive = interactive;
   inputs.WorldToData = in.WorldToData;
   inputs.WorldLights = &in.WorldLights;

@@ -123,7 +123,7 @@ void vtkAVSVolumeMapper::AssembleFrame(vtkRenderer* renderer,
   frame.LightVolumeDimensions = { 2, 2, 2 };
   frame.OcclusionDimensions = { 0, 0, 0 };
   this->GetPrecomputedGrids(frame.LightVolumeDimensions, frame.OcclusionDimensions);
-  frame.LightsPerPair = avs::ScatteringParameters::LightsPerPair(
+  frame.LightGroup = avs::ScatteringParameters::LightGroup(
     in.Parameters.SampleDistance, in.Whole.Capped(in.Parameters.LightVolumeMaximumDimension));
   frame.WholeDimensions = in.Whole.Dimensions;
   frame.PieceOffset = in.PieceOffset;

@@ -221,35 +221,34 @@ void CastRay(const VolumeScene& scene,
       sigmaT = 0.0; // clipped or cropped away
     }
   };
-  // Where sample s reads its lights: with pairs (ScatteringParameters::LightsPerPair on the
-  // light grid) the midpoint of the samples 2m and 2m + 1 that hold s, for both (a last sample
-  // alone: half a step beyond it), else the sample itself; as the GPU reads them.
-  const bool pairs = mode == RenderMode::AmbientScattering &&
-    ScatteringParameters::LightsPerPair(p.SampleDistance, v.Averaged.Geometry);
+  // Where sample s reads its lights: with groups of G samples (G = 2 or 4,
+  // ScatteringParameters::LightGroup on the light grid) the midpoint of the samples G m to
+  // G m + G - 1 that hold s, for all of them (beyond the ray's end where its last group is not
+  // whole), else the sample itself; as the GPU reads them.
+  const int group = mode == RenderMode::AmbientScattering
+    ? ScatteringParameters::LightGroup(p.SampleDistance, v.Averaged.Geometry)
+    : 1;
+  const bool pairs = group > 1;
   auto lightPoint = [&](int s)
   {
-    const double at = pairs ? (s - (s & 1)) + 1.0 : s + 0.5;
+    const double at = (s - s % group) + 0.5 * group;
     return o + d * (t0 + at * dt);
   };
   // Surfaces inside the medium (SurfaceShading.h): sample s with extinction sigma as a surface
-  // (P_s, world normal), the gradient read at the sample itself, or with pairs at the pair's
-  // first sample 2m for both (where the GPU's fetch of that sample brings it with its scalar).
+  // (P_s, world normal), the gradient read at the sample itself, or with groups the mean of the
+  // gradients of the group's two middle samples G m + G / 2 - 1 and G m + G / 2 (the ray's last
+  // sample for those beyond it) for all of them.
   const bool surfaces = mode == RenderMode::AmbientScattering && p.Surface.Active();
-  auto gradientPoint = [&](int s)
-  {
-    const double at = (pairs ? s - (s & 1) : s) + 0.5;
-    return o + d * (t0 + at * dt);
-  };
+  auto samplePoint = [&](int s) { return InIndexUnits(o + d * (t0 + (s + 0.5) * dt), spacing); };
   auto surfaceAt = [&](int s, double sigma)
   {
     if (!surfaces)
       return SurfacePoint();
     if (!pairs)
-      return classifier.SurfaceAt(
-        InIndexUnits(gradientPoint(s), spacing), sigma, p.Surface.Blending);
-    const int first = s - (s & 1), second = std::min(first + 1, n - 1);
-    return classifier.SurfaceAtMean(InIndexUnits(o + d * (t0 + (first + 0.5) * dt), spacing),
-      InIndexUnits(o + d * (t0 + (second + 0.5) * dt), spacing),
+      return classifier.SurfaceAt(samplePoint(s), sigma, p.Surface.Blending);
+    const int first = s - s % group;
+    return classifier.SurfaceAtMean(samplePoint(std::min(first + group / 2 - 1, n - 1)),
+      samplePoint(std::min(first + group / 2, n - 1)),
       sigma,
       p.Surface.Blending);
   };
@@ -367,8 +366,8 @@ void CastRay(const VolumeScene& scene,
       // what the P1 field scatters towards the camera, phi + g clamp(3 J.w, -phi, phi) with
       // 3 J.w = 3 D dphi/dt along the ray (the difference from the previous sample; 0 at the
       // first), as the exact integral over the step of a source constant on it.
-      // With pairs, phi is read at the pair's midpoint (lightPoint) and dphi/dt is the
-      // difference from the pair before, two steps back (0 at the ray's first pair).
+      // With groups, phi is read at the group's midpoint (lightPoint) and dphi/dt is the
+      // difference from the group before, G steps back (0 at the ray's first group).
       if (v.Diffuse.size() == 3 && sigmaT > 0.0)
       {
         const Vec3 xl = lightPoint(i);
@@ -380,9 +379,9 @@ void CastRay(const VolumeScene& scene,
         };
         const Vec3 phi = fluence(xl);
         Vec3 slope{ 0, 0, 0 };
-        if (pairs && i >= 2)
+        if (pairs && i >= group)
         {
-          slope = (phi - fluence(xl - d * (2.0 * dt))) * (1.0 / (2.0 * dt));
+          slope = (phi - fluence(xl - d * (group * dt))) * (1.0 / (group * dt));
         }
         else if (!pairs && phiBeforeIndex == i - 1)
         {

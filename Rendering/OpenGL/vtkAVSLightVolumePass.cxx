@@ -9,6 +9,9 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkTextureObject.h"
 
+#include "LightTiles.h"
+
+#include <algorithm>
 #include <array>
 #include <functional>
 
@@ -38,6 +41,47 @@ void vtkAVSLightVolumePass::ReleaseGraphicsResources(bool context)
   {
     vtkAVSShaderAssembly::ReleaseComputeProgram(program, context);
   }
+  if (this->TileBuffer && context)
+  {
+    glDeleteBuffers(1, &this->TileBuffer);
+  }
+  this->TileBuffer = 0;
+  this->TilesUploaded = false;
+}
+
+bool vtkAVSLightVolumePass::SetTiles(const std::array<int, 3>& dimensions,
+  std::vector<std::uint32_t> tiles,
+  std::string& error)
+{
+  if (this->TilesUploaded && dimensions == this->TileDimensions && tiles == this->Tiles)
+  {
+    return true;
+  }
+  this->Tiles = std::move(tiles);
+  this->TileDimensions = dimensions;
+  ++this->TilesVersion;
+  this->TilesUploaded = false;
+  if (!this->TileBuffer)
+  {
+    glGenBuffers(1, &this->TileBuffer);
+  }
+  vtkAVSRenderPasses::DiscardErrors();
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->TileBuffer);
+  // (At least one entry: a buffer of no bytes is not one the shader can be given.)
+  const std::uint32_t none = 0;
+  glBufferData(GL_SHADER_STORAGE_BUFFER,
+    static_cast<GLsizeiptr>(std::max<std::size_t>(1, this->Tiles.size()) * sizeof(std::uint32_t)),
+    this->Tiles.empty() ? &none : this->Tiles.data(),
+    GL_STATIC_DRAW);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  if (const GLenum status = glGetError())
+  {
+    error = "the light-volume pass's tiles could not be uploaded (GL error " +
+      std::to_string(status) + ")";
+    return false;
+  }
+  this->TilesUploaded = true;
+  return true;
 }
 
 bool vtkAVSLightVolumePass::Dispatch(vtkAVSVolumeTextures& textures,
@@ -68,9 +112,25 @@ bool vtkAVSLightVolumePass::Dispatch(vtkAVSVolumeTextures& textures,
   textures.AveragedExtinction->Activate();
   glUniform1i(location("u_averaged"), textures.AveragedExtinction->GetTextureUnit());
   uniforms(location);
-  glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8),
-    static_cast<GLuint>((d[1] + 7) / 8),
-    static_cast<GLuint>(d[2]));
+  if (variant == Directional || variant == Positional)
+  {
+    // Tube marching: one work group per tile (SetTiles; x then y, 65535 a row at most).
+    const GLuint tiles = static_cast<GLuint>(this->Tiles.size());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->TileBuffer);
+    glUniform1i(location("u_tileCount"), static_cast<GLint>(tiles));
+    const GLuint row = 65535;
+    if (tiles > 0)
+    {
+      glDispatchCompute(std::min(tiles, row), (tiles + row - 1) / row, 1);
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  }
+  else
+  {
+    glDispatchCompute(static_cast<GLuint>((d[0] + 7) / 8),
+      static_cast<GLuint>((d[1] + 7) / 8),
+      static_cast<GLuint>(d[2]));
+  }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, textures.LightVolumeFormat());
   glUseProgram(0);
@@ -92,6 +152,11 @@ bool vtkAVSLightVolumePass::Run(vtkAVSVolumeTextures& textures,
   std::string& error)
 {
   if (!textures.EnsureLightTextures(lightGrid.Dimensions, index / 4 + 1, error))
+  {
+    return false;
+  }
+  if ((!this->TilesUploaded || this->TileDimensions != lightGrid.Dimensions) &&
+    !this->SetTiles(lightGrid.Dimensions, avs::AllLightTiles(lightGrid.Dimensions), error))
   {
     return false;
   }

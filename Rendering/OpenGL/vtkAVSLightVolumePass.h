@@ -7,7 +7,9 @@
  * table slice's log gain, into the light's channel of the packed light-volume textures
  * (vtkAVSVolumeTextures; channel c of texture t holds light 4 t + c, allocated once per size),
  * and the copies of the averaged extinction into the channel after the last light's and of the
- * extended model's fluence of lights of one colour into the one after that.
+ * extended model's fluence of lights of one colour into the one after that. The tube marching
+ * goes over the tiles of the light grid given (SetTiles: those that something reads,
+ * avs::LightGridTiles), one work group each.
  * The CPU twin is Rendering/Core/LightVolume.cxx.
  */
 #ifndef vtkAVSLightVolumePass_h
@@ -17,8 +19,11 @@
 #include "LightVolume.h"
 #include "Lights.h"
 
+#include <array>
+#include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 class vtkAVSVolumeTextures;
 class vtkTextureObject;
@@ -59,7 +64,18 @@ public:
     int writes,
     const avs::Vec3& colour,
     std::string& error);
-  /// Forgets the program, deleting it when its context is current (`context`).
+  /// The tiles of the light grid `dimensions` that Run marches (avs::LightGridTiles; every tile
+  /// where none were set for the grid Run is given), uploaded where they differ from the last
+  /// ones (the context current); false with the reason when the upload fails.
+  bool SetTiles(const std::array<int, 3>& dimensions,
+    std::vector<std::uint32_t> tiles,
+    std::string& error);
+  /// Counts the changes of the tiles (a light volume marched over other tiles is not current).
+  int GetTilesVersion() const { return this->TilesVersion; }
+  /// How many tiles Run marches now.
+  std::size_t GetNumberOfTiles() const { return this->Tiles.size(); }
+  /// Forgets the program and the tiles' buffer, deleting them when their context is current
+  /// (`context`).
   void ReleaseGraphicsResources(bool context);
 
 private:
@@ -86,6 +102,12 @@ private:
     std::string& error);
   /// GL names of the light-volume compute programs, one per Variant.
   unsigned int Programs[NumberOfVariants] = { 0, 0, 0, 0 };
+  /// The tiles (SetTiles), the grid they are of, and their shader storage buffer.
+  std::vector<std::uint32_t> Tiles;
+  std::array<int, 3> TileDimensions{ 0, 0, 0 };
+  unsigned int TileBuffer = 0;
+  bool TilesUploaded = false;
+  int TilesVersion = 0;
 };
 
 #endif

@@ -1,5 +1,7 @@
 #include "vtkAVSRayCaster.h"
 
+#include "LightTiles.h"
+
 #include "vtkAVSFrameUniforms.h"
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSShaderAssembly.h"
@@ -287,6 +289,43 @@ bool vtkAVSRayCaster::ComputeLightVolume(int index,
   return this->LightVolumePass.Run(this->Textures, index, lightGrid, light, radius, law, error);
 }
 
+bool vtkAVSRayCaster::UpdateLightTiles(const avs::GridGeometry& lightGrid,
+  const avs::Light& light,
+  double radius,
+  bool diffusion,
+  bool skipEmpty,
+  std::string& error)
+{
+  const avs::ValueRangeGrid& ranges = this->Textures.ValueRanges;
+  const std::array<int, 3>& d = ranges.Dimensions();
+  const std::array<int, 3>& l = lightGrid.Dimensions;
+  const bool occupancy = skipEmpty && !ranges.Empty() &&
+    this->Textures.MajorantValues.size() == ranges.NumberOfCells() && d[0] > 1 && d[1] > 1 &&
+    d[2] > 1;
+  std::vector<std::uint32_t> tiles;
+  if (occupancy)
+  {
+    // The light grid spans the scalars' lattice: their spacing from its extent.
+    const avs::Vec3 extent = lightGrid.LocalExtent();
+    const avs::Vec3 spacing{ extent.x / (d[0] - 1), extent.y / (d[1] - 1), extent.z / (d[2] - 1) };
+    // A directional light's propagation direction, the same everywhere, in the local frame.
+    const avs::Vec3 direction = light.Type == avs::LightType::Positional
+      ? avs::Vec3{ 0.0, 0.0, 0.0 }
+      : lightGrid.WorldToLocalDirection(light.PropagationDirection(light.FocalPoint));
+    tiles = avs::LightGridTiles(this->Textures.MajorantValues,
+      ranges.Cells(),
+      ranges.CellSize(),
+      d,
+      l,
+      avs::LightReach(d, spacing, l, radius, diffusion, direction));
+  }
+  else
+  {
+    tiles = avs::AllLightTiles(l);
+  }
+  return this->LightVolumePass.SetTiles(l, std::move(tiles), error);
+}
+
 bool vtkAVSRayCaster::PackAveraged(int lights, std::string& error)
 {
   vtkAVSVolumeTextures& tx = this->Textures;
@@ -372,7 +411,7 @@ bool vtkAVSRayCaster::Render(vtkRenderer* renderer, const Frame& frame, std::str
           layout,
           packed ? lightCount : -1,
           fluencePacked ? lightCount + 1 : -1,
-          frame.LightsPerPair) +
+          frame.LightGroup) +
           vtkAVSShaderOptions::ClipDefines(frame.Clip) +
           (blend ? vtkAVSShaderOptions::BlendDefines(frame.Blend) : std::string()) +
           (bricked ? "#define AVS_BRICKED\n" : "") + (skip ? "#define AVS_SKIP\n" : "") +

@@ -147,6 +147,19 @@ public:
     double radius,
     avs::TubeLaw law,
     std::string& error);
+  /// Which tiles of `lightGrid` (over the uploaded scalars' box) the next ComputeLightVolume
+  /// marches for `light` (in the data's frame): with `skipEmpty` (the mapper's
+  /// EmptySpaceSkipping) those that the rays, and with `diffusion` the extended model's
+  /// diffusion at `radius`, can read near the cells that the occupancy says may hold material
+  /// (avs::LightGridTiles), else all of them. False with the reason when the upload fails.
+  bool UpdateLightTiles(const avs::GridGeometry& lightGrid,
+    const avs::Light& light,
+    double radius,
+    bool diffusion,
+    bool skipEmpty,
+    std::string& error);
+  /// Counts the changes of the occupancy that UpdateLightTiles reads.
+  int GetOccupancyVersion() const { return this->Textures.MajorantsVersion; }
   /// With 1-3 or 5-7 `lights`, copies the averaged extinction into the free channel after the
   /// last light's (compute shaders; vtkAVSLightVolumePass::CopyAveraged), which saves the rays
   /// a texture fetch per sample. Call after the light volumes are current; nothing happens when
@@ -187,9 +200,9 @@ public:
     avs::ClipRegion Clip;             ///< clipping planes and cropping, index frame
     vtkAVSShaderOptions::Blend Blend; ///< emission-absorption only
     std::array<int, 3> LightVolumeDimensions{ 1, 1, 1 };
-    /// Ambient scattering reads the lights once per pair of samples
-    /// (avs::ScatteringParameters::LightsPerPair).
-    bool LightsPerPair = false;
+    /// Ambient scattering reads the lights once per group of this many samples, 1, 2 or 4
+    /// (avs::ScatteringParameters::LightGroup).
+    int LightGroup = 1;
     /// The light grid covers the whole image of which the volume is a piece (distributed
     /// rendering): its samples and the piece's first sample in it.
     std::array<int, 3> WholeDimensions{ 1, 1, 1 };

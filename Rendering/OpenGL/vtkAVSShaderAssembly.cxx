@@ -67,7 +67,7 @@ std::string vtkAVSShaderAssembly::RayCastDefines(avs::RenderMode mode,
   const vtkAVSClassification::Layout& layout,
   int averagedSlot,
   int phiSlot,
-  bool lightsPerPair)
+  int lightGroup)
 {
   // The classification's choices (avs_classify.glsl).
   std::string defines = layout.Defines();
@@ -136,9 +136,10 @@ std::string vtkAVSShaderAssembly::RayCastDefines(avs::RenderMode mode,
   {
     defines += "#define AVS_EMISSION\n";
   }
-  if (lightsPerPair)
+  if (lightGroup > 1)
   {
-    defines += "#define AVS_LIGHTS_PER_PAIR\n";
+    defines += "#define AVS_LIGHTS_PER_PAIR\n#define AVS_LIGHT_GROUP " +
+      std::to_string(lightGroup == 4 ? 4 : 2) + "\n";
   }
   // Surfaces inside the medium (avs_surface.glsl), their precomputed gradient in u_surfaces;
   // with a blending above 0 the share of surface events depends on each sample's opacity.

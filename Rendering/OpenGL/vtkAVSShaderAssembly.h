@@ -37,7 +37,8 @@ public:
   /// it, vtkAVSVolumeTextures::AveragedSlot, or -1 for its own texture), where the extended
   /// model's fluence of lights of one colour is (`phiSlot`, vtkAVSVolumeTextures::PhiSlot: with
   /// `averagedSlot`, the rays read neither from the fluence's texture), and whether the lights
-  /// are read once per pair of samples (`lightsPerPair`, avs::ScatteringParameters::LightsPerPair).
+  /// are read once per group of `lightGroup` samples (1, 2 or 4,
+  /// avs::ScatteringParameters::LightGroup).
   /// One program per combination.
   static std::string RayCastDefines(avs::RenderMode mode,
     const avs::ScatteringParameters& parameters,
@@ -46,7 +47,7 @@ public:
     const vtkAVSClassification::Layout& layout,
     int averagedSlot = -1,
     int phiSlot = -1,
-    bool lightsPerPair = false);
+    int lightGroup = 1);
   /// The ray-casting fragment shader of `mode` with `defines` (RayCastDefines, the clipping's and
   /// the blend mode's); a blend mode other than composite (AVS_BLEND) takes the blend effect.
   static std::string RayCastFragmentShader(avs::RenderMode mode, const std::string& defines);

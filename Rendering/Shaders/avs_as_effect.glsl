@@ -15,11 +15,12 @@
 // this sum. AVS_LIGHT_TEXTURES (0-2) says how many light-volume textures the lights need;
 // AVS_EMISSION is defined when the emission term is not zero. The choices are compile-time
 // because a software rasterizer runs every branch of a shader whatever its condition.
-// AVS_LIGHTS_PER_PAIR (ScatteringParameters::LightsPerPair: two steps span at most one cell of
-// the light grid) reads the lights once per pair of samples of the unsplit ray, at the pair's
-// midpoint, for both of them (ARCHITECTURE.md, "The lights once per pair of samples"); with the
-// ring the ray caster then takes two samples per iteration (AVS_SAMPLE_PAIRS) and the pair's
-// snippet reads them. The CPU reference reads them at the same points.
+// AVS_LIGHTS_PER_PAIR, with AVS_LIGHT_GROUP G = 2 or 4 (ScatteringParameters::LightGroup: G
+// steps span at most one cell of the light grid), reads the lights once per group of G samples
+// of the unsplit ray, at the group's midpoint, for all of them (ARCHITECTURE.md, "The lights
+// once per group of samples"); with the ring the ray caster then takes G samples per iteration
+// (AVS_SAMPLE_PAIRS, AVS_SAMPLE_GROUP) and the group's snippet reads them. The CPU reference
+// reads them at the same points.
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 #define AVS_EFFECT_TERMINATION
 #endif
@@ -368,13 +369,20 @@ vec3 LightSum(vec3 index, vec3 world, vec3 direction)
 }
 
 // The ray parameter at which sample s (of this ray; brickFirst + s of the unsplit one) reads its
-// lights: with AVS_LIGHTS_PER_PAIR the midpoint of its pair of the unsplit ray's samples
-// (2m, 2m + 1), else the sample itself.
-int g_parity = 0; // the unsplit ray's index of sample 0, modulo 2
+// lights: with AVS_LIGHTS_PER_PAIR the midpoint of its group of the unsplit ray's samples
+// (G m to G m + G - 1), else the sample itself.
+int g_parity = 0; // the unsplit ray's index of sample 0, modulo G
+#ifdef AVS_LIGHTS_PER_PAIR
+// The first sample of sample s's group (of this ray).
+int GroupFirst(int s)
+{
+  return s - ((s + g_parity) & (AVS_LIGHT_GROUP - 1));
+}
+#endif
 float LightT(int s)
 {
 #ifdef AVS_LIGHTS_PER_PAIR
-  return t0 + (float(s - ((s + g_parity) & 1)) + 0.5 + offset) * dtWorld;
+  return t0 + (float(GroupFirst(s)) + 0.5 * float(AVS_LIGHT_GROUP - 1) + offset) * dtWorld;
 #else
   return t0 + (float(s) + offset) * dtWorld;
 #endif
@@ -382,28 +390,27 @@ float LightT(int s)
 
 #ifdef AVS_SURFACE
 // The surfaces' texel of sample s (of this ray; brickFirst + s of the unsplit one): with
-// AVS_LIGHTS_PER_PAIR the mean of its pair's two samples' (the unsplit ray's 2m and 2m + 1; 2m
-// alone where the ray ends there), else its own, as the CPU reference reads them
-// (Classifier::SurfaceAtMean). (With AVS_SURFACE_PACKED the pairs' own fetches serve instead.)
+// AVS_LIGHTS_PER_PAIR the mean of its group's two middle samples' (the unsplit ray's
+// G m + G / 2 - 1 and G m + G / 2; the ray's last sample for one beyond it), else its own, as
+// the CPU reference reads them (Classifier::SurfaceAtMean). (With AVS_SURFACE_PACKED the
+// group's own fetches serve instead.)
 vec4 SurfaceTexelOf(int s)
 {
 #ifdef AVS_LIGHTS_PER_PAIR
-  int first = s - ((s + g_parity) & 1);
-#else
-  int first = s;
-#endif
-  float t = t0 + (float(first) + offset) * dtWorld;
-  vec4 a = textureLod(u_surfaces, VolumeCoordinate(io + t * id), 0.0);
-#ifdef AVS_LIGHTS_PER_PAIR
 #ifdef AVS_BRICKED
-  bool alone = brickFirst + first + 1 >= raySteps;
+  int last = raySteps - 1 - brickFirst; // the unsplit ray's last sample, of this ray
 #else
-  bool alone = first + 1 >= raySteps;
+  int last = raySteps - 1;
 #endif
-  vec4 b = textureLod(u_surfaces, VolumeCoordinate(io + (t + dtWorld) * id), 0.0);
-  return alone ? a : 0.5 * (a + b);
+  int middle = GroupFirst(s) + AVS_LIGHT_GROUP / 2;
+  float ta = t0 + (float(min(middle - 1, last)) + offset) * dtWorld;
+  float tb = t0 + (float(min(middle, last)) + offset) * dtWorld;
+  vec4 a = textureLod(u_surfaces, VolumeCoordinate(io + ta * id), 0.0);
+  vec4 b = textureLod(u_surfaces, VolumeCoordinate(io + tb * id), 0.0);
+  return 0.5 * (a + b);
 #else
-  return a;
+  float t = t0 + (float(s) + offset) * dtWorld;
+  return textureLod(u_surfaces, VolumeCoordinate(io + t * id), 0.0);
 #endif
 }
 #endif
@@ -418,6 +425,7 @@ vec3 InScattered(vec4 classified, float tl)
 #ifdef AVS_LIGHTS_PER_PAIR
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 #define AVS_SAMPLE_PAIRS
+#define AVS_SAMPLE_GROUP AVS_LIGHT_GROUP
 #endif
 vec3 g_pairLight = vec3(0.0); // the current pair's light sum (AVS_SAMPLE_PAIRS)
 #ifdef AVS_DIFFUSE
@@ -444,11 +452,18 @@ bool EffectContinues(float T, int i)
 #ifndef AVS_LOOKAHEAD_EXPLICIT
 // Empty-space skipping (avs_skip.glsl; not with the explicit look-ahead, whose sample i adds the
 // light of sample i + k + 1): the samples [from, to) were empty and leapt over, T held over
-// them, and the ring keeps it for those it reads again (k + 1 and k + 2 back from `to` on).
+// them, and the ring keeps it for those it reads again: k + 1 and k + 2 back from `to` on, and
+// with groups of G samples from the group of `to`, which starts up to G - 1 before it, on
+// (whose samples the ray takes again), down to k + G back from `to`.
 #define AVS_EFFECT_LEAP
+#ifdef AVS_SAMPLE_PAIRS
+#define AVS_LEAP_KEEPS (AVS_SAMPLE_GROUP > 2 ? AVS_SAMPLE_GROUP : 2)
+#else
+#define AVS_LEAP_KEEPS 2
+#endif
 void EffectLeap(int from, int to)
 {
-  for (int s = max(from, to - g_lag - 2); s < to; ++s)
+  for (int s = max(from, to - g_lag - AVS_LEAP_KEEPS); s < to; ++s)
   {
     g_ring[s & (AVS_RING - 1)] = T;
   }
@@ -469,17 +484,17 @@ void EffectLeap(int from, int to)
   // None yet: per ray (a fragment may cast several: the image sample distance).
   g_phiBeforeIndex = -100;
 #endif
-#ifdef AVS_BRICKED
-  g_parity = brickFirst & 1;
+#if defined(AVS_BRICKED) && defined(AVS_LIGHTS_PER_PAIR)
+  g_parity = brickFirst & (AVS_LIGHT_GROUP - 1);
 #endif
 #if defined(AVS_SAMPLE_PAIRS) && defined(AVS_DIFFUSE_ANISOTROPIC) && defined(AVS_BRICKED)
-  // A brick's first pair takes dphi/dt from the unsplit ray's pair before it (in the bricks in
-  // front), as the unsplit ray does.
-  if (brickFirst - g_parity >= 2)
+  // A brick's first group takes dphi/dt from the unsplit ray's group before it (in the bricks
+  // in front), as the unsplit ray does.
+  if (brickFirst - g_parity >= AVS_LIGHT_GROUP)
   {
-    float tb = LightT(-g_parity) - 2.0 * dtWorld;
+    float tb = LightT(-g_parity) - float(AVS_LIGHT_GROUP) * dtWorld;
     g_phiBefore = DiffuseAt((io + tb * id) * g_lightScale + g_lightOffset).rgb;
-    g_phiBeforeIndex = -g_parity - 2;
+    g_phiBeforeIndex = -g_parity - AVS_LIGHT_GROUP;
   }
 #endif
 #define AVS_THETA_COORDINATE(j) g_thetaCoordinate[j] = ThetaCoordinate(dot(u_lightAxis[j], -direction));
@@ -517,37 +532,42 @@ void EffectLeap(int from, int to)
 #ifdef AVS_SAMPLE_PAIRS
     if (g_pairMaterial)
     {
-      // The lights of the samples pair and pair + 1, read once at their midpoint (not for a
-      // pair without material: neither sample would add them).
+      // The lights of the group's samples, read once at their midpoint (not for a group
+      // without material: none of its samples would add them).
       float tp = LightT(max(pair, 0));
       g_pairLight = LightSum(io + tp * id, origin + tp * direction, direction);
 #ifdef AVS_SURFACE
-      // Surfaces: the pair's gradient (the mean of its samples' texels) and reflected light (at
-      // its lights).
+      // Surfaces: the group's gradient (the mean of its middle samples' texels) and reflected
+      // light (at its lights).
 #ifdef AVS_SURFACE_PACKED
-      // (From the pair's own fetches, not bricked: pair >= 0, and sample B is A at the end.)
+      // (From the group's own fetches, not bricked: pair >= 0, and the samples beyond the ray's
+      // end are its last.)
+#if AVS_SAMPLE_GROUP == 4
+      SurfaceGradientFrom(0.5 * (voxelB + voxelC), -direction);
+#else
       SurfaceGradientFrom(0.5 * (voxelA + voxelB), -direction);
+#endif
 #else
       SurfaceGradientFrom(SurfaceTexelOf(pair), -direction);
 #endif
       SurfaceLights(origin + tp * direction, direction);
 #endif
 #ifdef AVS_DIFFUSE_ANISOTROPIC
-      // dphi/dt from the pair before (two steps back; 0 at the unsplit ray's first pair), its
-      // phi read here where that pair had no material or was leapt over.
-      bool before = g_phiBeforeIndex == pair - 2;
+      // dphi/dt from the group before (G steps back; 0 at the unsplit ray's first group), its
+      // phi read here where that group had no material or was leapt over.
+      bool before = g_phiBeforeIndex == pair - AVS_SAMPLE_GROUP;
 #ifdef AVS_BRICKED
-      bool exists = brickFirst + pair >= 2;
+      bool exists = brickFirst + pair >= AVS_SAMPLE_GROUP;
 #else
-      bool exists = pair >= 2;
+      bool exists = pair >= AVS_SAMPLE_GROUP;
 #endif
       if (!before && exists)
       {
-        float tb = LightT(max(pair - 2, 0));
+        float tb = LightT(max(pair, 0)) - float(AVS_SAMPLE_GROUP) * dtWorld;
         g_phiBefore = DiffuseAt((io + tb * id) * g_lightScale + g_lightOffset).rgb;
         before = true;
       }
-      vec3 slope = before ? (g_phi - g_phiBefore) / (2.0 * dt) : vec3(0.0);
+      vec3 slope = before ? (g_phi - g_phiBefore) / (float(AVS_SAMPLE_GROUP) * dt) : vec3(0.0);
       g_phiBefore = g_phi;
       g_phiBeforeIndex = pair;
       g_pairFluence = ScatteredFluenceOf(g_phi, g_averaged, slope) * (u_albedo / (4.0 * PI));
@@ -584,14 +604,16 @@ void EffectLeap(int from, int to)
       float tl = LightT(i);
       vec4 diffuse = DiffuseAt((io + tl * id) * g_lightScale + g_lightOffset);
 #if defined(AVS_LIGHTS_PER_PAIR) && defined(AVS_DIFFUSE_ANISOTROPIC)
-      // dphi/dt from the pair before, two steps back (none before the unsplit ray's first).
-      vec3 before = DiffuseAt((io + (tl - 2.0 * dtWorld) * id) * g_lightScale + g_lightOffset).rgb;
+      // dphi/dt from the group before, G steps back (none before the unsplit ray's first).
+      vec3 before = DiffuseAt(
+        (io + (tl - float(AVS_LIGHT_GROUP) * dtWorld) * id) * g_lightScale + g_lightOffset).rgb;
 #ifdef AVS_BRICKED
-      bool afterFirstPair = brickFirst + i >= 2; // the unsplit ray's index
+      bool afterFirstPair = brickFirst + i >= AVS_LIGHT_GROUP; // the unsplit ray's index
 #else
-      bool afterFirstPair = i >= 2;
+      bool afterFirstPair = i >= AVS_LIGHT_GROUP;
 #endif
-      vec3 slope = afterFirstPair ? (diffuse.rgb - before) / (2.0 * dt) : vec3(0.0);
+      vec3 slope =
+        afterFirstPair ? (diffuse.rgb - before) / (float(AVS_LIGHT_GROUP) * dt) : vec3(0.0);
       vec3 phi = ScatteredFluenceOf(diffuse.rgb, diffuse.a, slope);
 #else
       vec3 phi = ScatteredFluence(diffuse.rgb, diffuse.a, i, dt);

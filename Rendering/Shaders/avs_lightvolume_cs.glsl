@@ -39,6 +39,15 @@ uniform int u_directBeam;
 uniform sampler3D u_fluence; // (phi, sigma~t) on the target grid (vtkAVSDiffuseVolume)
 uniform vec3 u_fluenceWeights;
 #endif
+#ifndef AVS_LIGHT_VOLUME_COPY
+// Tube marching goes over the tiles of the target that something reads (Core/LightTiles.h:
+// 8 x 8 x 1 points, the work group), one work group each: x | y << 10 (tile indices) | z << 20.
+layout(std430, binding = 0) readonly buffer avs_LightTiles
+{
+  uint u_tiles[];
+};
+uniform int u_tileCount;
+#endif
 uniform vec3 u_light;           // propagation direction (directional) or position (positional)
 
 float g_tauScale = 0.0;         // (tau nodes - 1) / log(1 + tau maximum), set in main
@@ -106,7 +115,18 @@ bool Box(vec3 o, vec3 d, out float t0, out float t1)
 
 void main()
 {
+#ifdef AVS_LIGHT_VOLUME_COPY
   ivec3 voxel = ivec3(gl_GlobalInvocationID);
+#else
+  int t = int(gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x);
+  if (t >= u_tileCount)
+  {
+    return;
+  }
+  uint tile = u_tiles[t];
+  ivec3 voxel = ivec3(int(tile & 1023u) * 8, int((tile >> 10) & 1023u) * 8, int(tile >> 20)) +
+    ivec3(gl_LocalInvocationID.xy, 0);
+#endif
   if (any(greaterThanEqual(voxel, u_targetDimensions)))
   {
     return;

@@ -6,9 +6,9 @@
 // per-sample code) put in at the four effect markers below. Each sample (RaySample) fetches one
 // texel of the scalars (AVS_VOLUME_TEXTURE) and classifies it (avs_classify.glsl). An effect may define
 // AVS_EFFECT_TERMINATION (then its bool EffectContinues(float T, int i) ends the ray),
-// AVS_SAMPLE_PAIRS (with EffectContinues: the loop takes two samples per iteration, classifies
-// both, then runs the effect's per-pair code, which sees the pair's first index `pair` and
-// whether one of its samples has extinction, g_pairMaterial),
+// AVS_SAMPLE_PAIRS (with EffectContinues and AVS_SAMPLE_GROUP, 2 or 4: the loop takes that many
+// samples per iteration, classifies them, then runs the effect's per-group code, which sees the
+// group's first index `pair` and whether one of its samples has extinction, g_pairMaterial),
 // AVS_EFFECT_KEEPS_TRANSMITTANCE (then it updates T itself, as the blend modes other than
 // composite do), AVS_EFFECT_OUTPUT (then vec4 EffectOutput(vec3 L, float T) gives the
 // premultiplied pixel) and AVS_EFFECT_LEAP (then void EffectLeap(int from, int to) learns of
@@ -224,47 +224,69 @@ void main()
   //AVS::Effect::Init
 
 #ifdef AVS_SAMPLE_PAIRS
-  // Two samples per iteration, which share the effect's per-pair work (its Pair snippet): the
-  // unsplit ray's samples 2m and 2m + 1 (a brick that starts at an odd one starts with the
-  // second of its pair).
+  // AVS_SAMPLE_GROUP (2 or 4) samples per iteration, which share the effect's per-group work
+  // (its Pair snippet): the unsplit ray's samples G m to G m + G - 1 (a brick that starts inside
+  // a group starts with its part of it: the iteration's samples before the brick are classified
+  // as its first sample, and add nothing).
 #ifdef AVS_BRICKED
-  int firstPair = -(brickFirst & 1);
+  int firstPair = -(brickFirst & (AVS_SAMPLE_GROUP - 1));
 #else
   int firstPair = 0;
 #endif
-  for (int pair = firstPair; pair < steps; pair += 2)
+  for (int pair = firstPair; pair < steps; pair += AVS_SAMPLE_GROUP)
   {
 #ifdef AVS_SKIP
     if (pair >= g_checkFrom)
     {
-      // Over the empty cells to the pair of the first sample that may have material.
+      // Over the empty cells to the group of the first sample that may have material.
       int j = Leap(pair);
       if (j >= steps)
         break;
-      pair = max(pair, j - ((j - firstPair) & 1));
+      pair = max(pair, j - ((j - firstPair) & (AVS_SAMPLE_GROUP - 1)));
     }
 #endif
     if (!EffectContinues(T, max(pair, 0)))
       break;
-    // Both samples classified first: the effect's Pair snippet knows whether the pair has
-    // material (g_pairMaterial). (A brick's first pair of -1 classifies sample 0 twice.)
+    // The group's samples classified first: the effect's Pair snippet knows whether the group
+    // has material (g_pairMaterial).
     vec4 voxelA, voxelB;
     vec4 hereA = ClassifySample(max(pair, 0), voxelA);
-    vec4 hereB = ClassifySample(min(pair + 1, steps - 1), voxelB);
+    vec4 hereB = ClassifySample(clamp(pair + 1, 0, steps - 1), voxelB);
+#if AVS_SAMPLE_GROUP == 4
+    vec4 voxelC, voxelD;
+    vec4 hereC = ClassifySample(clamp(pair + 2, 0, steps - 1), voxelC);
+    vec4 hereD = ClassifySample(clamp(pair + 3, 0, steps - 1), voxelD);
+    g_pairMaterial = hereA.a > 0.0 || hereB.a > 0.0 || hereC.a > 0.0 || hereD.a > 0.0;
+#else
     g_pairMaterial = hereA.a > 0.0 || hereB.a > 0.0;
+#endif
     //AVS::Effect::Pair
     if (pair >= 0)
     {
       RaySampleClassified(pair, voxelA, hereA);
     }
-    if (pair + 1 < steps)
+    // (Each later sample ends the ray as the single loop does: with a look-ahead of 0 steps the
+    // test reads the sample before's ring entry.)
+    if (pair + 1 >= 0 && pair + 1 < steps)
     {
-      // (ends the ray as the single loop does: with a look-ahead of 0 steps the next test
-      // reads this sample's ring entry)
       if (!EffectContinues(T, pair + 1))
         break;
       RaySampleClassified(pair + 1, voxelB, hereB);
     }
+#if AVS_SAMPLE_GROUP == 4
+    if (pair + 2 >= 0 && pair + 2 < steps)
+    {
+      if (!EffectContinues(T, pair + 2))
+        break;
+      RaySampleClassified(pair + 2, voxelC, hereC);
+    }
+    if (pair + 3 < steps)
+    {
+      if (!EffectContinues(T, pair + 3))
+        break;
+      RaySampleClassified(pair + 3, voxelD, hereD);
+    }
+#endif
   }
 #else
   for (int i = 0; i < steps; ++i)

@@ -6,11 +6,14 @@
 // (LastEmptyCellFraction). Volumes: the shell with its core, clipped by two planes, cropped
 // (fence), with a binary mask and a label map, two independent components, two dependent
 // ones, NaN voxels, gradient opacity, split into bricks, jittered, at image sample distance 2,
-// and a transfer function whose opacity is a narrow band. The blend modes other than composite
-// and ambient scattering's explicit look-ahead (a radius beyond the ring) do not leap, and say
-// so. One mapper kept through a transfer-function change and new data draws what a mapper
-// without skipping draws. (Against the CPU reference the pictures are compared, with skipping on,
-// by TestMappersAgainstReference, TestMasks, TestComponents, TestBricking and the others.)
+// a transfer function whose opacity is a narrow band, a light grid coarse enough that ambient
+// scattering reads its lights once per four samples (unsplit and in bricks), and a small ball in
+// empty space (with the default ambient radius and a large one). The blend
+// modes other than composite and ambient scattering's explicit look-ahead (a radius beyond the
+// ring) do not leap, and say so. One mapper kept through a transfer-function change and new data
+// draws what a mapper without skipping draws. (Against the CPU reference the pictures are compared,
+// with skipping on, by TestMappersAgainstReference, TestMasks, TestComponents, TestBricking and the
+// others.)
 #include "DataTestScene.h"
 
 #include "vtkAmbientOcclusionVolumeMapper.h"
@@ -20,6 +23,7 @@
 #include "vtkPlaneCollection.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -50,6 +54,13 @@ std::array<double, 4> Labels(double x, double y, double)
 std::array<double, 4> ShellAndSlab(double x, double y, double z)
 {
   return { ShellValue(x, y, z)[0], SlabValue(x, y, z)[0], 0, 0 };
+}
+
+// A ball of radius 0.35 with a soft edge, in the middle of the box.
+std::array<double, 4> SmallBall(double x, double y, double z)
+{
+  const double r = std::sqrt(x * x + y * y + z * z);
+  return { 900.0 * std::clamp((0.35 - r) / 0.1, 0.0, 1.0), 0, 0, 0 };
 }
 
 // The shell with NaN voxels in a band through it.
@@ -167,6 +178,46 @@ int main()
   }
   cases.push_back(
     { "bricks", Shell(), Property(), [](vtkAVSVolumeMapper* m) { m->SetPartitions(2, 2, 1); } });
+  // A light grid coarse enough that ambient scattering reads its lights once per four samples
+  // (ScatteringParameters::LightGroup): a leap lands inside a group, whose samples before the
+  // leap's end the ray takes again; unsplit and in bricks.
+  auto coarseLights = [](vtkAVSVolumeMapper* m)
+  {
+    if (auto* as = vtkAmbientScatteringVolumeMapper::SafeDownCast(m))
+    {
+      as->SetLightVolumeMaximumDimension(16);
+    }
+  };
+  cases.push_back({ "lights per four samples", Shell(), Property(), coarseLights });
+  {
+    // A small ball in a box of empty space: the light-volume pass marches only the tiles of the
+    // light grid that something reads near occupied cells (LightTiles.h); with a large ambient
+    // radius the averaged extinction reaches far from the material, and the extended model's
+    // diffusion reads the light volumes r beyond that.
+    auto ball = MakeTestImage(N);
+    ball->GetPointData()->SetScalars(AddArray(ball, "ball", 1, false, SmallBall));
+    cases.push_back({ "small ball", ball, Property(), nullptr, true, 0.6 });
+    cases.push_back({ "small ball, large ambient radius",
+      ball,
+      Property(),
+      [](vtkAVSVolumeMapper* m)
+      {
+        if (auto* as = vtkAmbientScatteringVolumeMapper::SafeDownCast(m))
+        {
+          as->SetAmbientRadius(0.3);
+        }
+      },
+      true,
+      0.6 });
+  }
+  cases.push_back({ "bricks, lights per four samples",
+    Shell(),
+    Property(),
+    [coarseLights](vtkAVSVolumeMapper* m)
+    {
+      coarseLights(m);
+      m->SetPartitions(2, 2, 1);
+    } });
   cases.push_back(
     { "jittered", Shell(), Property(), [](vtkAVSVolumeMapper* m) { m->UseJitteringOn(); } });
   cases.push_back({ "image sample distance 2",

@@ -3,9 +3,10 @@
 //
 // - The GPU mapper against the CPU reference with ShadeOn, in both models, at blendings 0 and 1,
 //   lit on two sides and on one, with VTK's coefficients and with a sharper specular lobe, split
-//   into bricks, with the lights (and the surfaces) read per sample instead of per pair, and with
-//   a radius too large for the ring (the explicit look-ahead): PSNR at least 55 dB, as the
-//   unshaded comparison demands (TestMappersAgainstReference).
+//   into bricks, with the lights (and the surfaces) read per sample instead of per pair, and per
+//   four samples on a coarse light grid (unsplit and in bricks), and with a radius too large for
+//   the ring (the explicit look-ahead): PSNR at least 55 dB, as the unshaded comparison demands
+//   (TestMappersAgainstReference).
 // - ShadeOff, and ShadeOn at VolumetricScatteringBlending 2, give the unshaded picture bit for
 //   bit; ShadeOn at the default blending differs from it clearly.
 // - The surface term and its normal: a solid ball lit on one side only by a light behind the
@@ -38,6 +39,7 @@ struct Case
   double Radius = 0.08;
   double Step = 0.02;
   bool Bricked = false;
+  int LightGrid = 128; ///< LightVolumeMaximumDimension (24: the lights once per four samples)
 };
 
 // A solid ball of value 900 (radius 0.6) with a smooth edge, in a box of side 2.
@@ -120,6 +122,7 @@ int main(int argc, char* argv[])
     cpu->SetScatteringModel(c.Extended ? vtkVolumeReferenceRenderer::ExtendedModel
                                        : vtkVolumeReferenceRenderer::PaperModel);
     cpu->SetAmbientRadius(c.Radius);
+    cpu->SetLightVolumeMaximumDimension(c.LightGrid);
     cpu->SetAnisotropy(0.3);
     cpu->SetVolumetricScatteringBlending(c.Blending);
     ShowLinear(cpu.Get());
@@ -137,6 +140,7 @@ int main(int argc, char* argv[])
     property->SetSpecular(c.Specular);
     property->SetSpecularPower(c.SpecularPower);
     mapper->SetAmbientRadius(c.Radius);
+    mapper->SetLightVolumeMaximumDimension(c.LightGrid);
     mapper->SetSampleDistance(c.Step);
     mapper->SetPartitions(c.Bricked ? 2 : 1, c.Bricked ? 2 : 1, 1);
   };
@@ -167,6 +171,11 @@ int main(int argc, char* argv[])
     { "extended_b0_bricks", true, 0.0f, true, 0.2, 10.0, 0.08, 0.02, true },
     // Two steps longer than a cell of the light grid: the lights, and the surfaces, per sample.
     { "extended_b0_per_sample", true, 0.0f, false, 0.2, 10.0, 0.08, 0.04 },
+    // Four steps within a cell of a coarse light grid: the lights, and the surfaces' gradient
+    // (its group's two middle samples'), once per four samples; unsplit and in bricks.
+    { "extended_b0_fours", true, 0.0f, true, 0.2, 10.0, 0.08, 0.02, false, 24 },
+    { "paper_b1_fours", false, 1.0f, false, 0.2, 10.0, 0.08, 0.02, false, 24 },
+    { "extended_b0_bricks_fours", true, 0.0f, true, 0.2, 10.0, 0.08, 0.02, true, 24 },
     // 2 r / step > vtkAVSRayCaster::MaximumRingSize: the explicit look-ahead.
     { "extended_b0_explicit", true, 0.0f, true, 0.2, 10.0, 1.2, 0.004 },
   };

@@ -272,3 +272,26 @@ TEST(ReferenceRenderer, LightsPerPairWhenTwoStepsSpanAtMostOneLightCell)
   EXPECT_TRUE(ScatteringParameters::LightsPerPair(
     ScatteringParameters().Resolve(data).SampleDistance, data.Capped(16)));
 }
+
+TEST(ReferenceRenderer, LightGroupOfFourWhenFourStepsSpanAtMostOneLightCell)
+{
+  GridGeometry light;
+  light.Dimensions = { 40, 40, 40 };
+  light.Spacing = { 0.05, 0.05, 0.06 };
+  EXPECT_EQ(ScatteringParameters::LightGroup(0.01, light), 4);
+  EXPECT_EQ(ScatteringParameters::LightGroup(0.0125, light), 4); // four steps: one cell
+  EXPECT_EQ(ScatteringParameters::LightGroup(0.013, light), 2);
+  EXPECT_EQ(ScatteringParameters::LightGroup(0.025, light), 2);
+  EXPECT_EQ(ScatteringParameters::LightGroup(0.03, light), 1);
+  EXPECT_EQ(ScatteringParameters::LightGroup(0.0, light), 1);
+  // The automatic step (half a voxel): in fours where the light grid is at most half the
+  // data's per axis (a 256^3 volume on the default 128^3 light grid), in pairs on the data's
+  // own grid.
+  GridGeometry data;
+  data.Dimensions = { 256, 256, 256 };
+  data.Spacing = { 1.0, 1.0, 1.0 };
+  const double step = ScatteringParameters().Resolve(data).SampleDistance;
+  EXPECT_EQ(ScatteringParameters::LightGroup(step, data.Capped(128)), 4);
+  EXPECT_EQ(ScatteringParameters::LightGroup(step, data.Capped(129)), 2);
+  EXPECT_EQ(ScatteringParameters::LightGroup(step, data), 2);
+}
