@@ -1,6 +1,7 @@
 #include "LightTiles.h"
 
 #include "AveragedExtinction.h"
+#include "SummedAreaTable.h"
 
 #include <algorithm>
 #include <cmath>
@@ -94,32 +95,16 @@ std::vector<std::uint32_t> LightGridTiles(const std::vector<float>& occupied,
   {
     return AllLightTiles(l);
   }
-  // Occupied cells counted over boxes: a prefix sum of (cells + 1)^3 entries.
-  const std::size_t sx = cells[0] + 1, sy = cells[1] + 1;
-  std::vector<std::uint32_t> sum(sx * sy * (cells[2] + 1), 0);
-  auto at = [&](int i, int j, int k) -> std::uint32_t&
-  { return sum[(static_cast<std::size_t>(k) * sy + j) * sx + i]; };
-  for (int k = 0; k < cells[2]; ++k)
-    for (int j = 0; j < cells[1]; ++j)
-      for (int i = 0; i < cells[0]; ++i)
-      {
-        const std::size_t c = (static_cast<std::size_t>(k) * cells[1] + j) * cells[0] + i;
-        at(i + 1, j + 1, k + 1) = (occupied[c] > 0.0f ? 1u : 0u) + at(i, j + 1, k + 1) +
-          at(i + 1, j, k + 1) + at(i + 1, j + 1, k) - at(i, j, k + 1) - at(i, j + 1, k) -
-          at(i + 1, j, k) + at(i, j, k);
-      }
+  // Occupied cells counted over boxes of cells.
+  std::vector<float> ones(count);
+  std::transform(
+    occupied.begin(), occupied.end(), ones.begin(), [](float v) { return v > 0.0f ? 1.0f : 0.0f; });
+  const SummedAreaTable sum(ones.data(), cells);
   // The cells [lo, hi] along axis a whose owned indices meet [p0 - low, p1 + high].
   auto range = [&](int a, double p0, double p1, const LightReachBox& box, int& lo, int& hi)
   {
     lo = std::clamp(static_cast<int>(std::floor((p0 - box.Low[a]) / cellSize)), 0, cells[a] - 1);
     hi = std::clamp(static_cast<int>(std::floor((p1 + box.High[a]) / cellSize)), 0, cells[a] - 1);
-  };
-  auto occupiedIn = [&](const std::array<int, 3>& lo, const std::array<int, 3>& hi)
-  {
-    return at(hi[0] + 1, hi[1] + 1, hi[2] + 1) - at(lo[0], hi[1] + 1, hi[2] + 1) -
-      at(hi[0] + 1, lo[1], hi[2] + 1) - at(hi[0] + 1, hi[1] + 1, lo[2]) +
-      at(lo[0], lo[1], hi[2] + 1) + at(lo[0], hi[1] + 1, lo[2]) + at(hi[0] + 1, lo[1], lo[2]) -
-      at(lo[0], lo[1], lo[2]);
   };
   std::vector<std::uint32_t> tiles;
   for (int z = 0; z < l[2]; ++z)
@@ -142,7 +127,7 @@ std::vector<std::uint32_t> LightGridTiles(const std::vector<float>& occupied,
           range(2, pz, pz, reach[b], lo[2], hi[2]);
           // (Clamped: the first and the last cells reach beyond the lattice, as the occupancy
           // grid's reach the box's border; a box beyond it meets them, which only marches more.)
-          read = occupiedIn(lo, hi) > 0;
+          read = sum.BoxSum(lo, hi) > 0.5;
         }
         if (read)
         {

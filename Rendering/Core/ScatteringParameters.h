@@ -104,11 +104,6 @@ struct ScatteringParameters
     }
     return 4.0 * sampleDistance <= cell ? 4 : (2.0 * sampleDistance <= cell ? 2 : 1);
   }
-  /// Whether the lights are read once per group of two or more samples (LightGroup above 1).
-  static bool LightsPerPair(double sampleDistance, const GridGeometry& lightGrid)
-  {
-    return LightGroup(sampleDistance, lightGrid) > 1;
-  }
 
   /// A copy with automatic values filled in for grid g and values clamped into their ranges.
   ScatteringParameters Resolve(const GridGeometry& g) const

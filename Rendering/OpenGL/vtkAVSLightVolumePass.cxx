@@ -59,7 +59,6 @@ bool vtkAVSLightVolumePass::SetTiles(const std::array<int, 3>& dimensions,
   }
   this->Tiles = std::move(tiles);
   this->TileDimensions = dimensions;
-  ++this->TilesVersion;
   this->TilesUploaded = false;
   if (!this->TileBuffer)
   {

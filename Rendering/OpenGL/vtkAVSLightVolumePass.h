@@ -70,10 +70,6 @@ public:
   bool SetTiles(const std::array<int, 3>& dimensions,
     std::vector<std::uint32_t> tiles,
     std::string& error);
-  /// Counts the changes of the tiles (a light volume marched over other tiles is not current).
-  int GetTilesVersion() const { return this->TilesVersion; }
-  /// How many tiles Run marches now.
-  std::size_t GetNumberOfTiles() const { return this->Tiles.size(); }
   /// Forgets the program and the tiles' buffer, deleting them when their context is current
   /// (`context`).
   void ReleaseGraphicsResources(bool context);
@@ -107,7 +103,6 @@ private:
   std::array<int, 3> TileDimensions{ 0, 0, 0 };
   unsigned int TileBuffer = 0;
   bool TilesUploaded = false;
-  int TilesVersion = 0;
 };
 
 #endif

@@ -261,16 +261,18 @@ TEST(ReferenceRenderer, LightsPerPairWhenTwoStepsSpanAtMostOneLightCell)
   GridGeometry light;
   light.Dimensions = { 40, 40, 40 };
   light.Spacing = { 0.05, 0.05, 0.06 };
-  EXPECT_TRUE(ScatteringParameters::LightsPerPair(0.02, light));
-  EXPECT_TRUE(ScatteringParameters::LightsPerPair(0.025, light)); // two steps: one cell
-  EXPECT_FALSE(ScatteringParameters::LightsPerPair(0.03, light));
-  EXPECT_FALSE(ScatteringParameters::LightsPerPair(0.0, light));
+  EXPECT_GT(ScatteringParameters::LightGroup(0.02, light), 1);
+  EXPECT_GT(ScatteringParameters::LightGroup(0.025, light), 1); // two steps: one cell
+  EXPECT_EQ(ScatteringParameters::LightGroup(0.03, light), 1);
+  EXPECT_EQ(ScatteringParameters::LightGroup(0.0, light), 1);
   // The automatic step on the data's own grid: always in pairs.
   const GridGeometry data = light;
-  EXPECT_TRUE(ScatteringParameters::LightsPerPair(
-    ScatteringParameters().Resolve(data).SampleDistance, data.Capped(128)));
-  EXPECT_TRUE(ScatteringParameters::LightsPerPair(
-    ScatteringParameters().Resolve(data).SampleDistance, data.Capped(16)));
+  EXPECT_GT(ScatteringParameters::LightGroup(
+              ScatteringParameters().Resolve(data).SampleDistance, data.Capped(128)),
+    1);
+  EXPECT_GT(ScatteringParameters::LightGroup(
+              ScatteringParameters().Resolve(data).SampleDistance, data.Capped(16)),
+    1);
 }
 
 TEST(ReferenceRenderer, LightGroupOfFourWhenFourStepsSpanAtMostOneLightCell)
