@@ -28,10 +28,12 @@ avs::Vec3 Transform(vtkMatrix4x4* m, const avs::Vec3& p)
 
 // Whether a light volume marched over the tiles chosen by `built` (vtkAVSScatteringVolumes'
 // LightState::TilesKey) holds those that `needed` chooses: all of them, or those of the same
-// occupancy with the diffusion's reach where it is needed.
-bool CoversTiles(const std::array<int, 3>& built, const std::array<int, 3>& needed)
+// occupancy with the diffusion's reads, on the same diffusion grid, where they are needed.
+bool CoversTiles(const std::array<int, 4>& built, const std::array<int, 4>& needed)
 {
-  return built[1] == 0 || (needed[1] == 1 && built[0] == needed[0] && built[2] >= needed[2]);
+  return built[1] == 0 ||
+    (needed[1] == 1 && built[0] == needed[0] &&
+      (needed[2] == 0 || (built[2] == 1 && built[3] == needed[3])));
 }
 } // namespace
 
@@ -207,9 +209,10 @@ bool vtkAVSScatteringVolumes::UpdateLights(const vtkAVSPrecomputeInputs& inputs,
   // marches the whole grid, which every rank's diffusion reads.
   const bool skipEmpty = inputs.SkipEmptySpace && !inputs.LitAsPiece;
   const bool diffusion = rp.Model == avs::ScatteringModel::Extended;
-  const std::array<int, 3> tilesKey{ gpu && skipEmpty ? caster.GetOccupancyVersion() : -2,
+  const std::array<int, 4> tilesKey{ gpu && skipEmpty ? caster.GetOccupancyVersion() : -2,
     gpu && skipEmpty ? 1 : 0,
-    gpu && skipEmpty && diffusion ? 1 : 0 };
+    gpu && skipEmpty && diffusion ? 1 : 0,
+    gpu && skipEmpty && diffusion ? rp.DiffusionVolumeMaximumDimension : 0 };
   for (std::size_t j = 0; j < n; ++j)
   {
     avs::Light dataLight = worldLights[j];
@@ -231,7 +234,7 @@ bool vtkAVSScatteringVolumes::UpdateLights(const vtkAVSPrecomputeInputs& inputs,
       if (gpu)
       {
         if (!caster.UpdateLightTiles(
-              lightGrid, dataLight, rp.AmbientRadius, diffusion, skipEmpty, error) ||
+              lightGrid, dataLight, rp, diffusion, skipEmpty, this->AveragedVersion, error) ||
           !caster.ComputeLightVolume(
             static_cast<int>(j), lightGrid, dataLight, rp.AmbientRadius, law, error))
         {
@@ -330,14 +333,17 @@ bool vtkAVSScatteringVolumes::UpdateDiffuse(const vtkAVSPrecomputeInputs& inputs
     volumes.push_back(state.Volume);
   }
   vtkAVSDiffuseVolume& diffuse = caster.GetDiffuseVolume();
+  // The packed fluence is read by the rays alone: where they read the light volumes.
   const bool done = gpu ? diffuse.Compute(caster.GetWindow(),
                             avs::DiffusionGeometry(lightGrid, rp.DiffusionVolumeMaximumDimension),
                             lightGrid.Dimensions,
+                            caster.RayTiles(lightGrid, inputs.SkipEmptySpace && !inputs.LitAsPiece),
                             caster.GetAveragedExtinctionTexture(),
                             caster.GetLightVolumeTexture(0),
                             caster.GetLightVolumeTexture(1),
                             lights,
                             rp,
+                            this->AveragedVersion,
                             error)
                         : diffuse.Upload(caster.GetWindow(),
                             avs::ComputeDiffuse(this->Averaged, lights, volumes, rp),

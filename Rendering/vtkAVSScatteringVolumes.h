@@ -89,7 +89,7 @@ private:
     avs::TubeLaw Law = avs::TubeLaw::Forward;
     /// What the light grid's tiles it was marched over were chosen from (GPU path): the
     /// occupancy's version, whether empty space was left out, whether the diffusion's reach was.
-    std::array<int, 3> TilesKey{ -1, -1, -1 };
+    std::array<int, 4> TilesKey{ -1, -1, -1, -1 };
     bool Built = false;
     avs::Grid Volume; ///< CPU path only
   };

@@ -1,6 +1,5 @@
 #include "LightTiles.h"
 
-#include "AveragedExtinction.h"
 #include "SummedAreaTable.h"
 
 #include <algorithm>
@@ -30,46 +29,18 @@ double NodeIndex(int i, int n, int l)
 }
 } // namespace
 
-std::vector<LightReachBox> LightReach(const std::array<int, 3>& dataDimensions,
-  const Vec3& dataSpacing,
-  const std::array<int, 3>& lightDimensions,
-  double radius,
-  bool diffusion,
-  const Vec3& direction)
+LightReachBox RayReach(const std::array<int, 3>& dataDimensions,
+  const std::array<int, 3>& lightDimensions)
 {
-  const std::array<int, 3> half = AveragingHalfWidths(radius, dataSpacing);
-  const double spacing[3] = { dataSpacing.x, dataSpacing.y, dataSpacing.z };
-  const double norm = Length(direction);
-  const double along[3] = { norm > 0.0 ? direction.x / norm : 0.0,
-    norm > 0.0 ? direction.y / norm : 0.0,
-    norm > 0.0 ? direction.z / norm : 0.0 };
-  LightReachBox rays, source;
+  LightReachBox rays;
   for (int a = 0; a < 3; ++a)
   {
     const double cell = lightDimensions[a] > 1
       ? static_cast<double>(dataDimensions[a] - 1) / (lightDimensions[a] - 1)
       : static_cast<double>(dataDimensions[a]);
     rays.Low[a] = rays.High[a] = 2.0 * cell + 1.0;
-    // Material within `around` of a point the diffusion's source reads r downstream of.
-    const double around = half[a] + 1.0 + cell + cell + 1.0;
-    const double r = radius / spacing[a];
-    if (norm > 0.0)
-    {
-      // The node is r along the direction from such a point: the material r upstream of it.
-      source.Low[a] = around + r * along[a];
-      source.High[a] = around - r * along[a];
-    }
-    else
-    {
-      source.Low[a] = source.High[a] = around + r;
-    }
   }
-  std::vector<LightReachBox> boxes{ rays };
-  if (diffusion)
-  {
-    boxes.push_back(source);
-  }
-  return boxes;
+  return rays;
 }
 
 std::vector<std::uint32_t> AllLightTiles(const std::array<int, 3>& l)

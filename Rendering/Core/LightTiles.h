@@ -1,15 +1,13 @@
 // Empty space in the light-volume pass (ARCHITECTURE.md, "Empty space"): the tiles of the light
-// grid whose light volumes something reads. The rays read the light volumes only at samples with
-// material (their group's light point, at most a light cell away, interpolated over one more), and
-// the extended model's diffusion at its cells with averaged extinction (within the averaging box
-// of material), r downstream. A node farther than that from every cell that the occupancy grid
-// (OccupancyGrid.h) says may hold material is read by nothing: the GPU pass marches only the
-// tiles that hold a nearer node, and leaves the others' texels as they were (finite: the textures
-// start at 1).
+// grid whose light volumes the rays read. They read the light volumes only at samples with
+// material (their group's light point, at most a light cell away, interpolated over one more): a
+// node farther than that from every cell that the occupancy grid (OccupancyGrid.h) says may hold
+// material is read by no ray. The GPU pass marches only the tiles that hold a nearer node (and,
+// for the extended model, those that its diffusion reads, flagged on the GPU from its cells that
+// are not vacuum: vtkAVSDiffuseVolume::MarkTiles), and leaves the others' texels as they were
+// (finite: the textures start at 1).
 #ifndef avs_LightTiles_h
 #define avs_LightTiles_h
-
-#include "Vec3.h"
 
 #include <array>
 #include <cstdint>
@@ -30,25 +28,14 @@ struct LightReachBox
   std::array<double, 3> High{ 0.0, 0.0, 0.0 };
 };
 
-/// The boxes within which a node of the light grid `lightDimensions` over the data's lattice
-/// `dataDimensions` (spacing `dataSpacing`) is read from a voxel with material:
-/// - the rays': two light cells (a light point within one of a sample, and the interpolation's)
-///   and a voxel to spare, on every side;
-/// - with `diffusion` (the extended model) the diffusion's, which reads the light volume r
-///   downstream of each point with averaged extinction (within the averaging box's half width at
-///   `radius` and a voxel of material, and a light cell between the nodes), interpolated over a
-///   light cell, with a voxel to spare: for a light whose propagation direction is the same
-///   everywhere (`direction`, in the data's local frame, non-zero: a directional light) that box
-///   moved r upstream, else widened by r on every side.
-std::vector<LightReachBox> LightReach(const std::array<int, 3>& dataDimensions,
-  const Vec3& dataSpacing,
-  const std::array<int, 3>& lightDimensions,
-  double radius,
-  bool diffusion,
-  const Vec3& direction = Vec3{ 0.0, 0.0, 0.0 });
+/// The box within which a node of the light grid `lightDimensions` over the data's lattice
+/// `dataDimensions` is read by the rays from a voxel with material: two light cells (a light
+/// point within one of a sample, and the interpolation's) and a voxel to spare, on every side.
+LightReachBox RayReach(const std::array<int, 3>& dataDimensions,
+  const std::array<int, 3>& lightDimensions);
 
 /// The tiles of the light grid `lightDimensions` over the lattice `dataDimensions` that hold a
-/// node with an occupied cell in one of its boxes `reach` (LightReach): cells of `cellSize` voxels
+/// node with an occupied cell in one of its boxes `reach` (RayReach): cells of `cellSize` voxels
 /// per axis, `cells` of them (x fastest), occupied where `occupied` is above 0 (cell a owns the
 /// indices [a B, (a + 1) B), the first one from minus infinity, the last one to infinity). Each
 /// tile as its x and y tile indices and its z node, x | y << 10 | z << 20, in z, y, x order. Every

@@ -1,6 +1,7 @@
 #include "vtkAVSDiffuseVolume.h"
 
 #include "DiffuseFluence.h"
+#include "LightTiles.h"
 #include "vtkAVSRenderPasses.h"
 #include "vtkAVSShaderAssembly.h"
 #include "vtkAVSShaders.h"
@@ -74,60 +75,118 @@ bool vtkAVSDiffuseVolume::Allocate(vtkOpenGLRenderWindow* window,
   return true;
 }
 
-bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
-  const avs::GridGeometry& grid,
-  const std::array<int, 3>& lightDimensions,
-  vtkTextureObject* averaged,
-  vtkTextureObject* lights0,
-  vtkTextureObject* lights1,
-  const std::vector<avs::Light>& lights,
-  const avs::ScatteringParameters& p,
-  std::string& error)
+namespace
 {
-  const int n = static_cast<int>(std::min<std::size_t>(lights.size(), 8));
-  if (!averaged || (n > 0 && !lights0) || (n > 4 && !lights1))
+// The lists of level l of `levels` in the buffer of cells: the first entry, and each list's
+// length (half its cells and one).
+std::size_t ListCapacity(const avs::GridGeometry& level)
+{
+  const std::array<int, 3>& n = level.Dimensions;
+  return static_cast<std::size_t>(n[0]) * n[1] * n[2] / 2 + 1;
+}
+std::size_t ListBase(const std::vector<avs::GridGeometry>& levels, std::size_t l)
+{
+  std::size_t base = 0;
+  for (std::size_t k = 0; k < l; ++k)
   {
-    error = "the diffusion solve needs the averaged extinction and the light volumes on the GPU";
-    return false;
+    base += 8 + 2 * ListCapacity(levels[k]);
   }
-  // The program for these lights' kinds (avs_lights.glsl's defines).
+  return base;
+}
+} // namespace
+
+bool vtkAVSDiffuseVolume::EnsurePrograms(const std::vector<avs::Light>* lights, std::string& error)
+{
+  // The source's program for these lights' kinds (avs_lights.glsl's defines; without lights it
+  // is left as it is); the other stages have no lights.
+  const int n = lights ? static_cast<int>(std::min<std::size_t>(lights->size(), 8)) : 0;
   int positional = 0;
   bool spot = false;
   for (int j = 0; j < n; ++j)
   {
-    if (lights[j].Type == avs::LightType::Positional)
+    if ((*lights)[j].Type == avs::LightType::Positional)
     {
       positional |= 1 << j;
-      spot = spot || lights[j].IsSpot();
+      spot = spot || (*lights)[j].IsSpot();
     }
   }
   const std::string defines = "#define AVS_NUMBER_OF_LIGHTS " + std::to_string(n) +
     "\n#define AVS_POSITIONAL_LIGHTS " + std::to_string(positional) + "\n" +
     (spot ? "#define AVS_SPOT_LIGHTS\n" : "");
-  if (!this->Programs[0] || defines != this->ProgramDefines)
+  for (int stage = 0; stage < NumberOfStages; ++stage)
   {
-    this->ProgramDefines.clear();
-    for (int stage = 0; stage < 3; ++stage)
+    const bool withLights = stage == SourceStage;
+    if ((withLights && !lights) ||
+      (this->Programs[stage] && (!withLights || defines == this->ProgramDefines)))
     {
-      vtkAVSShaderAssembly::ReleaseComputeProgram(this->Programs[stage], true);
-      std::string source = avs_diffusion_cs;
-      const std::size_t line = source.find('\n') + 1; // after #version
-      source.insert(line,
-        "#define AVS_DIFFUSION_STAGE " + std::to_string(stage) + "\n" + defines + avs_lights +
-          "\n");
-      this->Programs[stage] =
-        vtkAVSShaderAssembly::BuildComputeProgram(source.c_str(), "diffusion");
-      if (!this->Programs[stage])
-      {
-        error = "the diffusion compute shader did not build";
-        return false;
-      }
+      continue;
     }
-    this->ProgramDefines = defines;
+    vtkAVSShaderAssembly::ReleaseComputeProgram(this->Programs[stage], true);
+    std::string source = avs_diffusion_cs;
+    const std::size_t line = source.find('\n') + 1; // after #version
+    source.insert(line,
+      "#define AVS_DIFFUSION_STAGE " + std::to_string(stage) + "\n" +
+        (withLights ? defines
+                    : "#define AVS_NUMBER_OF_LIGHTS 0\n#define AVS_POSITIONAL_LIGHTS 0\n") +
+        avs_lights + "\n");
+    this->Programs[stage] = vtkAVSShaderAssembly::BuildComputeProgram(source.c_str(), "diffusion");
+    if (!this->Programs[stage])
+    {
+      error = "the diffusion compute shader did not build";
+      return false;
+    }
+    if (withLights)
+    {
+      this->ProgramDefines = defines;
+    }
   }
-  // The nested solve's levels (DiffusionLevels), finest first: the finest is the texture the
-  // ray caster reads, the coarser ones are held with their sources for the next solve.
+  return true;
+}
+
+bool vtkAVSDiffuseVolume::ListCells(vtkOpenGLRenderWindow* window,
+  const avs::GridGeometry& grid,
+  const std::array<int, 3>& lightDimensions,
+  vtkTextureObject* averaged,
+  const std::vector<avs::Light>* lights,
+  const avs::ScatteringParameters& p,
+  int averagedVersion,
+  std::string& error)
+{
   const std::vector<avs::GridGeometry> levels = avs::DiffusionLevels(grid);
+  const std::array<int, 3>& finest = levels[0].Dimensions;
+  const std::vector<double> key{ static_cast<double>(averagedVersion),
+    static_cast<double>(finest[0]),
+    static_cast<double>(finest[1]),
+    static_cast<double>(finest[2]),
+    grid.Spacing.x,
+    grid.Spacing.y,
+    grid.Spacing.z,
+    static_cast<double>(lightDimensions[0]),
+    static_cast<double>(lightDimensions[1]),
+    static_cast<double>(lightDimensions[2]),
+    p.Albedo,
+    p.Anisotropy,
+    p.AmbientRadius };
+  if (!averaged)
+  {
+    error = "the diffusion's cells need the averaged extinction on the GPU";
+    return false;
+  }
+  if (!this->EnsurePrograms(lights, error))
+  {
+    return false;
+  }
+  if (this->CellBuffer && key == this->ListedKey)
+  {
+    return true;
+  }
+  this->ListedKey.clear();
+  if (finest[0] > 2048 || finest[1] > 2048 || finest[2] > 1024)
+  {
+    error = "the diffusion grid is too large for the GPU solve's lists of cells";
+    return false;
+  }
+  // The levels' textures (kept from the last solve where their sizes stay).
   for (std::size_t t = 2 * (levels.size() - 1); t < this->Coarser.size(); ++t)
   {
     if (this->Coarser[t])
@@ -138,19 +197,247 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   this->Coarser.resize(2 * (levels.size() - 1));
   for (std::size_t l = 0; l < levels.size(); ++l)
   {
-    vtkSmartPointer<vtkTextureObject>& phi = this->LevelFluence(l);
-    vtkSmartPointer<vtkTextureObject>& q = this->LevelSource(l);
-    if (!this->Allocate(window, phi, levels[l].Dimensions, nullptr, error) ||
-      !this->Allocate(window, q, levels[l].Dimensions, nullptr, error))
+    if (!this->Allocate(window, this->LevelFluence(l), levels[l].Dimensions, nullptr, error) ||
+      !this->Allocate(window, this->LevelSource(l), levels[l].Dimensions, nullptr, error))
     {
       return false;
     }
   }
+  vtkAVSRenderPasses::DiscardErrors();
+  window->GetShaderCache()->ReleaseCurrentShader();
+  const std::size_t entries = ListBase(levels, levels.size());
+  if (!this->CellBuffer || this->CellEntries != entries)
+  {
+    if (!this->CellBuffer)
+    {
+      glGenBuffers(1, &this->CellBuffer);
+    }
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->CellBuffer);
+    glBufferData(GL_SHADER_STORAGE_BUFFER,
+      static_cast<GLsizeiptr>(entries * sizeof(std::uint32_t)),
+      nullptr,
+      GL_DYNAMIC_DRAW);
+    this->CellEntries = entries;
+  }
+  const GLuint program = this->Programs[ListStage];
+  glUseProgram(program);
+  this->SetModelUniforms(program, lightDimensions, averaged, p);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->CellBuffer);
+  for (std::size_t l = 0; l < levels.size(); ++l)
+  {
+    const std::array<int, 3>& n = levels[l].Dimensions;
+    this->SetLevelUniforms(program, levels, l);
+    // The lists start empty: no work groups along x, one along y and z.
+    const std::uint32_t empty[8] = { 0, 1, 1, 0, 1, 1, 0, 0 };
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->CellBuffer);
+    glBufferSubData(GL_SHADER_STORAGE_BUFFER,
+      static_cast<GLintptr>(ListBase(levels, l) * sizeof(std::uint32_t)),
+      sizeof(empty),
+      empty);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    glBindImageTexture(
+      0, this->LevelFluence(l)->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glDispatchCompute(static_cast<GLuint>((n[0] + 7) / 8),
+      static_cast<GLuint>((n[1] + 7) / 8),
+      static_cast<GLuint>(n[2]));
+  }
+  glMemoryBarrier(
+    GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  glUseProgram(0);
+  averaged->Deactivate();
+  if (const GLenum status = glGetError())
+  {
+    error = "OpenGL error " + std::to_string(status) + " in listing the diffusion's cells";
+    return false;
+  }
+  this->ListedKey = key;
+  return true;
+}
+
+bool vtkAVSDiffuseVolume::MarkTiles(vtkOpenGLRenderWindow* window,
+  const avs::GridGeometry& grid,
+  const std::array<int, 3>& lightDimensions,
+  const avs::Light& light,
+  const avs::ScatteringParameters& p,
+  const std::vector<std::uint32_t>& rayTiles,
+  vtkAVSTileList& tiles,
+  std::string& error)
+{
+  if (this->ListedKey.empty() || !this->CellBuffer)
+  {
+    error = "the diffusion's cells are not listed";
+    return false;
+  }
+  const std::vector<avs::GridGeometry> levels = avs::DiffusionLevels(grid);
+  // A flag per tile, set for the rays' tiles.
+  const std::array<int, 3> along{ (lightDimensions[0] + avs::LightTileSize - 1) /
+      avs::LightTileSize,
+    (lightDimensions[1] + avs::LightTileSize - 1) / avs::LightTileSize,
+    lightDimensions[2] };
+  const std::size_t count = static_cast<std::size_t>(along[0]) * along[1] * along[2];
+  std::vector<std::uint32_t> flags(count, 0u);
+  for (const std::uint32_t t : rayTiles)
+  {
+    const std::array<int, 3> o = avs::LightTileOrigin(t);
+    const std::size_t i =
+      (static_cast<std::size_t>(o[2]) * along[1] + o[1] / avs::LightTileSize) * along[0] +
+      o[0] / avs::LightTileSize;
+    flags[std::min(i, count - 1)] = 1u;
+  }
+  vtkAVSRenderPasses::DiscardErrors();
+  window->GetShaderCache()->ReleaseCurrentShader();
+  if (!this->FlagBuffer)
+  {
+    glGenBuffers(1, &this->FlagBuffer);
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->FlagBuffer);
+  glBufferData(GL_SHADER_STORAGE_BUFFER,
+    static_cast<GLsizeiptr>(count * sizeof(std::uint32_t)),
+    flags.data(),
+    GL_DYNAMIC_DRAW);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  if (!tiles.Reset(lightDimensions, error))
+  {
+    return false;
+  }
+  // The reads of every level's cells, from the light in the local frame.
+  GLuint program = this->Programs[MarkStage];
+  glUseProgram(program);
+  auto location = [&program](const char* name) { return glGetUniformLocation(program, name); };
+  this->SetModelUniforms(program, lightDimensions, nullptr, p);
+  const bool positional = light.Type == avs::LightType::Positional;
+  const avs::Vec3 where = positional
+    ? grid.WorldToLocal(light.Position)
+    : grid.WorldToLocalDirection(avs::Normalize(light.FocalPoint - light.Position));
+  glUniform1i(location("u_markPositional"), positional ? 1 : 0);
+  glUniform3f(location("u_markLight"),
+    static_cast<float>(where.x),
+    static_cast<float>(where.y),
+    static_cast<float>(where.z));
+  glUniform3i(location("u_tilesAlong"), along[0], along[1], along[2]);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->CellBuffer);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, this->FlagBuffer);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, this->CellBuffer);
+  for (std::size_t l = 0; l < levels.size(); ++l)
+  {
+    this->SetLevelUniforms(program, levels, l);
+    for (int colour = 0; colour < 2; ++colour)
+    {
+      glUniform1i(location("u_colour"), colour);
+      glDispatchComputeIndirect(
+        static_cast<GLintptr>((ListBase(levels, l) + 3 * colour) * sizeof(std::uint32_t)));
+    }
+  }
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  // The flagged tiles into the list.
+  program = this->Programs[CompactStage];
+  glUseProgram(program);
+  glUniform3i(location("u_tilesAlong"), along[0], along[1], along[2]);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, tiles.GetBuffer());
+  const std::array<std::uint32_t, 3> groups = vtkAVSTileList::Groups((count + 63) / 64);
+  glDispatchCompute(groups[0], groups[1], groups[2]);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  for (unsigned int binding : { 0u, 1u, 2u })
+  {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
+  }
+  glUseProgram(0);
+  if (const GLenum status = glGetError())
+  {
+    error = "OpenGL error " + std::to_string(status) + " in marking the diffusion's tiles";
+    return false;
+  }
+  return true;
+}
+
+void vtkAVSDiffuseVolume::SetModelUniforms(unsigned int program,
+  const std::array<int, 3>& lightDimensions,
+  vtkTextureObject* averaged,
+  const avs::ScatteringParameters& p)
+{
+  auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
+  glUniform3f(location("u_lightDimensions"),
+    static_cast<float>(lightDimensions[0]),
+    static_cast<float>(lightDimensions[1]),
+    static_cast<float>(lightDimensions[2]));
+  glUniform1f(location("u_albedo"), static_cast<float>(p.Albedo));
+  glUniform1f(location("u_anisotropy"), static_cast<float>(p.Anisotropy));
+  glUniform1f(location("u_ambientRadius"), static_cast<float>(p.AmbientRadius));
+  glUniform1f(location("u_relaxation"), static_cast<float>(avs::DiffusionSettings().Relaxation));
+  glUniform1f(location("u_transportLimit"),
+    static_cast<float>(avs::TransportLengthLimitInRadii * p.AmbientRadius));
+  if (averaged)
+  {
+    averaged->Activate();
+    glUniform1i(location("u_averaged"), averaged->GetTextureUnit());
+  }
+}
+
+void vtkAVSDiffuseVolume::SetLevelUniforms(unsigned int program,
+  const std::vector<avs::GridGeometry>& levels,
+  std::size_t l)
+{
+  auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
+  const avs::GridGeometry& level = levels[l];
+  const std::array<int, 3>& n = level.Dimensions;
+  glUniform3i(location("u_dimensions"), n[0], n[1], n[2]);
+  glUniform3f(location("u_spacing"),
+    static_cast<float>(level.Spacing.x),
+    static_cast<float>(level.Spacing.y),
+    static_cast<float>(level.Spacing.z));
+  glUniform1f(location("u_vacuum"),
+    static_cast<float>(
+      avs::VacuumOpticalDepth * 3.0 / (level.Spacing.x + level.Spacing.y + level.Spacing.z)));
+  glUniform1i(location("u_hasCoarser"), l + 1 < levels.size() ? 1 : 0);
+  const std::array<int, 3> c = l + 1 < levels.size() ? levels[l + 1].Dimensions : n;
+  glUniform3i(location("u_coarserDimensions"), c[0], c[1], c[2]);
+  glUniform1i(location("u_listBase"), static_cast<GLint>(ListBase(levels, l)));
+  glUniform1i(location("u_listCapacity"), static_cast<GLint>(ListCapacity(level)));
+}
+
+bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
+  const avs::GridGeometry& grid,
+  const std::array<int, 3>& lightDimensions,
+  const std::vector<std::uint32_t>& tiles,
+  vtkTextureObject* averaged,
+  vtkTextureObject* lights0,
+  vtkTextureObject* lights1,
+  const std::vector<avs::Light>& lights,
+  const avs::ScatteringParameters& p,
+  int averagedVersion,
+  std::string& error)
+{
+  const int n = static_cast<int>(std::min<std::size_t>(lights.size(), 8));
+  if (!averaged || (n > 0 && !lights0) || (n > 4 && !lights1))
+  {
+    error = "the diffusion solve needs the averaged extinction and the light volumes on the GPU";
+    return false;
+  }
+  // The cells that are not vacuum, on every level (kept from the light volumes' tiles).
+  if (!this->ListCells(window, grid, lightDimensions, averaged, &lights, p, averagedVersion, error))
+  {
+    return false;
+  }
+  const std::vector<avs::GridGeometry> levels = avs::DiffusionLevels(grid);
+  // A new packed texture is written everywhere (its texels start undefined), a kept one over
+  // the tiles that the rays read.
+  const vtkSmartPointer<vtkTextureObject> before = this->Texture; // (held: no other one there)
   if (!this->Allocate(window, this->Texture, lightDimensions, nullptr, error))
   {
     return false;
   }
+  const bool fresh = this->Texture != before || this->Dimensions != lightDimensions;
   this->Dimensions = lightDimensions;
+  if (!this->PackTiles.Set(lightDimensions,
+        fresh || tiles.empty() ? avs::AllLightTiles(lightDimensions) : tiles,
+        error))
+  {
+    error = "the diffusion solve: " + error;
+    return false;
+  }
 
   vtkAVSRenderPasses::DiscardErrors();
   window->GetShaderCache()->ReleaseCurrentShader();
@@ -182,7 +469,6 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
     const avs::TubeLaw law = avs::TubeLawFor(true, l.Type);
     weight[j] = static_cast<float>(avs::DiffusionSourceWeight(law, p.Albedo, p.Anisotropy));
   }
-  averaged->Activate();
   vtkTextureObject* first = lights0 ? lights0 : averaged;
   vtkTextureObject* second = lights1 ? lights1 : first;
   first->Activate();
@@ -190,10 +476,15 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
   {
     second->Activate();
   }
-  // What every stage reads: the lights, the model's parameters and the textures.
-  for (const GLuint stage : this->Programs)
+  // What the stages read: the lights (the source's), the model's parameters and the textures.
+  for (const int stage : { SourceStage, RelaxStage, PackStage })
   {
-    use(stage);
+    use(this->Programs[stage]);
+    this->SetModelUniforms(program, lightDimensions, averaged, p);
+    if (stage != SourceStage)
+    {
+      continue;
+    }
     glUniform3fv(location("u_lightPosition"), 8, &position[0][0]);
     glUniform3fv(location("u_lightAxis"), 8, &axis[0][0]);
     glUniform3fv(location("u_lightIrradiance"), 8, &irradiance[0][0]);
@@ -201,79 +492,55 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
     glUniform1fv(location("u_lightConeCos"), 8, coneCos);
     glUniform1fv(location("u_lightExponent"), 8, exponent);
     glUniform1fv(location("u_sourceWeight"), 8, weight);
-    glUniform3f(location("u_lightDimensions"),
-      static_cast<float>(lightDimensions[0]),
-      static_cast<float>(lightDimensions[1]),
-      static_cast<float>(lightDimensions[2]));
-    glUniform1f(location("u_albedo"), static_cast<float>(p.Albedo));
-    glUniform1f(location("u_anisotropy"), static_cast<float>(p.Anisotropy));
-    glUniform1f(location("u_ambientRadius"), static_cast<float>(p.AmbientRadius));
-    glUniform1f(location("u_relaxation"), static_cast<float>(avs::DiffusionSettings().Relaxation));
-    glUniform1f(location("u_transportLimit"),
-      static_cast<float>(avs::TransportLengthLimitInRadii * p.AmbientRadius));
-    glUniform1i(location("u_averaged"), averaged->GetTextureUnit());
     glUniform1i(location("u_lightVolumes0"), first->GetTextureUnit());
     glUniform1i(location("u_lightVolumes1"), second->GetTextureUnit());
   }
-  // Coarsest level first; each starts from the coarser one's phi (the shader's Coarser), with
-  // DiffusionCoarseIterations sweeps, the finest with DiffusionIterations.
+  // Coarsest level first; each starts from the coarser one's phi (the source stage's Coarser),
+  // with DiffusionCoarseIterations sweeps, the finest with DiffusionIterations, over the lists
+  // of its cells that are not vacuum (a half-sweep per colour).
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->CellBuffer);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, this->CellBuffer);
   for (std::size_t l = levels.size(); l-- > 0;)
   {
-    const avs::GridGeometry& level = levels[l];
-    const std::array<int, 3>& n = level.Dimensions;
     vtkTextureObject* phi = this->LevelFluence(l);
     vtkTextureObject* q = this->LevelSource(l);
     vtkTextureObject* coarser = l + 1 < levels.size() ? this->LevelFluence(l + 1).Get() : phi;
-    // The level's grid, for its source (stage 0) and its sweeps (stage 1).
-    for (int stage = 1; stage >= 0; --stage)
-    {
-      use(this->Programs[stage]);
-      glUniform3i(location("u_dimensions"), n[0], n[1], n[2]);
-      glUniform3f(location("u_spacing"),
-        static_cast<float>(level.Spacing.x),
-        static_cast<float>(level.Spacing.y),
-        static_cast<float>(level.Spacing.z));
-      glUniform1f(location("u_vacuum"),
-        static_cast<float>(
-          avs::VacuumOpticalDepth * 3.0 / (level.Spacing.x + level.Spacing.y + level.Spacing.z)));
-      glUniform1i(location("u_hasCoarser"), l + 1 < levels.size() ? 1 : 0);
-      const std::array<int, 3> c = l + 1 < levels.size() ? levels[l + 1].Dimensions : n;
-      glUniform3i(location("u_coarserDimensions"), c[0], c[1], c[2]);
-    }
     glBindImageTexture(0, phi->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
     glBindImageTexture(1, q->GetHandle(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
     glBindImageTexture(2, coarser->GetHandle(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
-    const GLuint groups[3] = { static_cast<GLuint>((n[0] + 7) / 8),
-      static_cast<GLuint>((n[1] + 7) / 8),
-      static_cast<GLuint>(n[2]) };
-    glDispatchCompute(groups[0], groups[1], groups[2]);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    use(this->Programs[1]);
-    // A half-sweep's invocations cover every other cell of a row (the shader's main).
-    const GLuint halfRow = static_cast<GLuint>(((n[0] + 1) / 2 + 7) / 8);
+    const std::size_t base = ListBase(levels, l);
+    auto overList = [&](int colour)
+    {
+      glUniform1i(location("u_colour"), colour);
+      glDispatchComputeIndirect(static_cast<GLintptr>((base + 3 * colour) * sizeof(std::uint32_t)));
+      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    };
+    use(this->Programs[SourceStage]);
+    this->SetLevelUniforms(program, levels, l);
+    overList(0);
+    overList(1);
+    use(this->Programs[RelaxStage]);
+    this->SetLevelUniforms(program, levels, l);
     const int sweeps = l == 0 ? p.DiffusionIterations : p.DiffusionCoarseIterations;
     for (int it = 0; it < sweeps; ++it)
     {
-      for (int colour = 0; colour < 2; ++colour)
-      {
-        glUniform1i(location("u_colour"), colour);
-        glDispatchCompute(halfRow, groups[1], groups[2]);
-        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-      }
+      overList(0);
+      overList(1);
     }
   }
-  // phi onto the light grid, with the averaged extinction, for the ray caster's one fetch.
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  // phi onto the light grid, with the averaged extinction, for the ray caster's one fetch, over
+  // the tiles that the rays read (a work group each).
   {
-    const std::array<int, 3>& n = lightDimensions;
     const std::array<int, 3>& m = grid.Dimensions;
-    use(this->Programs[2]);
-    glUniform3i(location("u_dimensions"), n[0], n[1], n[2]);
+    use(this->Programs[PackStage]);
+    glUniform3i(
+      location("u_dimensions"), lightDimensions[0], lightDimensions[1], lightDimensions[2]);
     glUniform3i(location("u_coarserDimensions"), m[0], m[1], m[2]);
     glBindImageTexture(2, this->Fluence->GetHandle(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(3, this->Texture->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glDispatchCompute(static_cast<GLuint>((n[0] + 7) / 8),
-      static_cast<GLuint>((n[1] + 7) / 8),
-      static_cast<GLuint>(n[2]));
+    this->PackTiles.Dispatch(1);
   }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
@@ -370,6 +637,17 @@ void vtkAVSDiffuseVolume::ReleaseGraphicsResources(vtkWindow* window)
   {
     vtkAVSShaderAssembly::ReleaseComputeProgram(program, window != nullptr);
   }
+  for (unsigned int* buffer : { &this->CellBuffer, &this->FlagBuffer })
+  {
+    if (*buffer && window)
+    {
+      glDeleteBuffers(1, buffer);
+    }
+    *buffer = 0;
+  }
+  this->CellEntries = 0;
+  this->ListedKey.clear();
+  this->PackTiles.ReleaseGraphicsResources(window != nullptr);
   this->ProgramDefines.clear();
   this->Dimensions = { 0, 0, 0 };
 }

@@ -41,45 +41,18 @@ void vtkAVSLightVolumePass::ReleaseGraphicsResources(bool context)
   {
     vtkAVSShaderAssembly::ReleaseComputeProgram(program, context);
   }
-  if (this->TileBuffer && context)
-  {
-    glDeleteBuffers(1, &this->TileBuffer);
-  }
-  this->TileBuffer = 0;
-  this->TilesUploaded = false;
+  this->Tiles.ReleaseGraphicsResources(context);
 }
 
 bool vtkAVSLightVolumePass::SetTiles(const std::array<int, 3>& dimensions,
-  std::vector<std::uint32_t> tiles,
+  const std::vector<std::uint32_t>& tiles,
   std::string& error)
 {
-  if (this->TilesUploaded && dimensions == this->TileDimensions && tiles == this->Tiles)
+  if (!this->Tiles.Set(dimensions, tiles, error))
   {
-    return true;
-  }
-  this->Tiles = std::move(tiles);
-  this->TileDimensions = dimensions;
-  this->TilesUploaded = false;
-  if (!this->TileBuffer)
-  {
-    glGenBuffers(1, &this->TileBuffer);
-  }
-  vtkAVSRenderPasses::DiscardErrors();
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->TileBuffer);
-  // (At least one entry: a buffer of no bytes is not one the shader can be given.)
-  const std::uint32_t none = 0;
-  glBufferData(GL_SHADER_STORAGE_BUFFER,
-    static_cast<GLsizeiptr>(std::max<std::size_t>(1, this->Tiles.size()) * sizeof(std::uint32_t)),
-    this->Tiles.empty() ? &none : this->Tiles.data(),
-    GL_STATIC_DRAW);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  if (const GLenum status = glGetError())
-  {
-    error = "the light-volume pass's tiles could not be uploaded (GL error " +
-      std::to_string(status) + ")";
+    error = "the light-volume pass: " + error;
     return false;
   }
-  this->TilesUploaded = true;
   return true;
 }
 
@@ -113,16 +86,9 @@ bool vtkAVSLightVolumePass::Dispatch(vtkAVSVolumeTextures& textures,
   uniforms(location);
   if (variant == Directional || variant == Positional)
   {
-    // Tube marching: one work group per tile (SetTiles; x then y, 65535 a row at most).
-    const GLuint tiles = static_cast<GLuint>(this->Tiles.size());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->TileBuffer);
-    glUniform1i(location("u_tileCount"), static_cast<GLint>(tiles));
-    const GLuint row = 65535;
-    if (tiles > 0)
-    {
-      glDispatchCompute(std::min(tiles, row), (tiles + row - 1) / row, 1);
-    }
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+    // Tube marching: one work group per tile (SetTiles, or a list written on the GPU).
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    this->Tiles.Dispatch(0);
   }
   else
   {
@@ -154,7 +120,7 @@ bool vtkAVSLightVolumePass::Run(vtkAVSVolumeTextures& textures,
   {
     return false;
   }
-  if ((!this->TilesUploaded || this->TileDimensions != lightGrid.Dimensions) &&
+  if (!this->Tiles.IsOf(lightGrid.Dimensions) &&
     !this->SetTiles(lightGrid.Dimensions, avs::AllLightTiles(lightGrid.Dimensions), error))
   {
     return false;

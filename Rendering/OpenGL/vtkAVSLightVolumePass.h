@@ -8,8 +8,8 @@
  * (vtkAVSVolumeTextures; channel c of texture t holds light 4 t + c, allocated once per size),
  * and the copies of the averaged extinction into the channel after the last light's and of the
  * extended model's fluence of lights of one colour into the one after that. The tube marching
- * goes over the tiles of the light grid given (SetTiles: those that something reads,
- * avs::LightGridTiles), one work group each.
+ * goes over the tiles of the light grid given (SetTiles: those that the rays read,
+ * avs::LightGridTiles; or a list written on the GPU, GetTiles), one work group each.
  * The CPU twin is Rendering/Core/LightVolume.cxx.
  */
 #ifndef vtkAVSLightVolumePass_h
@@ -18,6 +18,7 @@
 #include "Grid.h"
 #include "LightVolume.h"
 #include "Lights.h"
+#include "vtkAVSTileList.h"
 
 #include <array>
 #include <cstdint>
@@ -68,8 +69,10 @@ public:
   /// where none were set for the grid Run is given), uploaded where they differ from the last
   /// ones (the context current); false with the reason when the upload fails.
   bool SetTiles(const std::array<int, 3>& dimensions,
-    std::vector<std::uint32_t> tiles,
+    const std::vector<std::uint32_t>& tiles,
     std::string& error);
+  /// The tiles Run marches, for a list written on the GPU (vtkAVSDiffuseVolume::MarkTiles).
+  vtkAVSTileList& GetTiles() { return this->Tiles; }
   /// Forgets the program and the tiles' buffer, deleting them when their context is current
   /// (`context`).
   void ReleaseGraphicsResources(bool context);
@@ -98,11 +101,7 @@ private:
     std::string& error);
   /// GL names of the light-volume compute programs, one per Variant.
   unsigned int Programs[NumberOfVariants] = { 0, 0, 0, 0 };
-  /// The tiles (SetTiles), the grid they are of, and their shader storage buffer.
-  std::vector<std::uint32_t> Tiles;
-  std::array<int, 3> TileDimensions{ 0, 0, 0 };
-  unsigned int TileBuffer = 0;
-  bool TilesUploaded = false;
+  vtkAVSTileList Tiles; ///< what Run marches (SetTiles)
 };
 
 #endif

@@ -1,5 +1,6 @@
 #include "vtkAVSRayCaster.h"
 
+#include "DiffuseFluence.h"
 #include "LightTiles.h"
 
 #include "vtkAVSFrameUniforms.h"
@@ -291,39 +292,57 @@ bool vtkAVSRayCaster::ComputeLightVolume(int index,
 
 bool vtkAVSRayCaster::UpdateLightTiles(const avs::GridGeometry& lightGrid,
   const avs::Light& light,
-  double radius,
+  const avs::ScatteringParameters& resolved,
   bool diffusion,
   bool skipEmpty,
+  int averagedVersion,
   std::string& error)
+{
+  const std::array<int, 3>& l = lightGrid.Dimensions;
+  std::vector<std::uint32_t> tiles = this->RayTiles(lightGrid, skipEmpty);
+  if (!diffusion || tiles.size() == avs::AllLightTiles(l).size())
+  {
+    return this->LightVolumePass.SetTiles(l, tiles, error);
+  }
+  // The diffusion's reads, from its cells that are not vacuum, on the GPU.
+  const avs::GridGeometry grid =
+    avs::DiffusionGeometry(lightGrid, resolved.DiffusionVolumeMaximumDimension);
+  return this->Diffuse.ListCells(this->Textures.Window,
+           grid,
+           l,
+           this->Textures.AveragedExtinction,
+           nullptr,
+           resolved,
+           averagedVersion,
+           error) &&
+    this->Diffuse.MarkTiles(this->Textures.Window,
+      grid,
+      l,
+      light,
+      resolved,
+      tiles,
+      this->LightVolumePass.GetTiles(),
+      error);
+}
+
+std::vector<std::uint32_t> vtkAVSRayCaster::RayTiles(const avs::GridGeometry& lightGrid,
+  bool skipEmpty) const
 {
   const avs::ValueRangeGrid& ranges = this->Textures.ValueRanges;
   const std::array<int, 3>& d = ranges.Dimensions();
   const std::array<int, 3>& l = lightGrid.Dimensions;
-  const bool occupancy = skipEmpty && !ranges.Empty() &&
-    this->Textures.MajorantValues.size() == ranges.NumberOfCells() && d[0] > 1 && d[1] > 1 &&
-    d[2] > 1;
-  std::vector<std::uint32_t> tiles;
-  if (occupancy)
+  if (!skipEmpty || ranges.Empty() ||
+    this->Textures.MajorantValues.size() != ranges.NumberOfCells() || d[0] < 2 || d[1] < 2 ||
+    d[2] < 2)
   {
-    // The light grid spans the scalars' lattice: their spacing from its extent.
-    const avs::Vec3 extent = lightGrid.LocalExtent();
-    const avs::Vec3 spacing{ extent.x / (d[0] - 1), extent.y / (d[1] - 1), extent.z / (d[2] - 1) };
-    // A directional light's propagation direction, the same everywhere, in the local frame.
-    const avs::Vec3 direction = light.Type == avs::LightType::Positional
-      ? avs::Vec3{ 0.0, 0.0, 0.0 }
-      : lightGrid.WorldToLocalDirection(light.PropagationDirection(light.FocalPoint));
-    tiles = avs::LightGridTiles(this->Textures.MajorantValues,
-      ranges.Cells(),
-      ranges.CellSize(),
-      d,
-      l,
-      avs::LightReach(d, spacing, l, radius, diffusion, direction));
+    return avs::AllLightTiles(l);
   }
-  else
-  {
-    tiles = avs::AllLightTiles(l);
-  }
-  return this->LightVolumePass.SetTiles(l, std::move(tiles), error);
+  return avs::LightGridTiles(this->Textures.MajorantValues,
+    ranges.Cells(),
+    ranges.CellSize(),
+    d,
+    l,
+    { avs::RayReach(d, l) });
 }
 
 bool vtkAVSRayCaster::PackAveraged(int lights, std::string& error)

@@ -16,6 +16,7 @@
 #include "ClipRegion.h"
 #include "DisplayTransform.h"
 #include "Grid.h"
+#include "LightTiles.h"
 #include "LightVolume.h"
 #include "Lights.h"
 #include "ReferenceRenderer.h"
@@ -35,6 +36,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkWeakPointer.h"
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -149,15 +151,22 @@ public:
     std::string& error);
   /// Which tiles of `lightGrid` (over the uploaded scalars' box) the next ComputeLightVolume
   /// marches for `light` (in the data's frame): with `skipEmpty` (the mapper's
-  /// EmptySpaceSkipping) those that the rays, and with `diffusion` the extended model's
-  /// diffusion at `radius`, can read near the cells that the occupancy says may hold material
-  /// (avs::LightGridTiles), else all of them. False with the reason when the upload fails.
+  /// EmptySpaceSkipping) those that the rays can read near the cells that the occupancy says
+  /// may hold material (avs::LightGridTiles), and with `diffusion` those that the extended
+  /// model's diffusion source reads from its cells that are not vacuum (vtkAVSDiffuseVolume::
+  /// MarkTiles, on the GPU, from the averaged extinction of `averagedVersion`), else all of
+  /// them. False with the reason when that fails.
   bool UpdateLightTiles(const avs::GridGeometry& lightGrid,
     const avs::Light& light,
-    double radius,
+    const avs::ScatteringParameters& resolved,
     bool diffusion,
     bool skipEmpty,
+    int averagedVersion,
     std::string& error);
+  /// The tiles of `lightGrid` that the rays read (with `skipEmpty`, those near the cells that
+  /// the occupancy says may hold material; else all): where the extended model packs its
+  /// fluence.
+  std::vector<std::uint32_t> RayTiles(const avs::GridGeometry& lightGrid, bool skipEmpty) const;
   /// Counts the changes of the occupancy that UpdateLightTiles reads.
   int GetOccupancyVersion() const { return this->Textures.MajorantsVersion; }
   /// With 1-3 or 5-7 `lights`, copies the averaged extinction into the free channel after the
@@ -280,7 +289,8 @@ private:
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   vtkAVSVolumeTextures Textures;
   vtkAVSDiffuseVolume Diffuse; ///< the extended model's fluence
-  vtkAVSDepthCopy Depth;       ///< where the rays end at opaque geometry
+
+  vtkAVSDepthCopy Depth; ///< where the rays end at opaque geometry
   bool LastSkipped = false;
   vtkAVSAveragedExtinctionPass AveragedExtinctionPass;
   vtkAVSLightVolumePass LightVolumePass;

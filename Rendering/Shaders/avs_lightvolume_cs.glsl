@@ -41,12 +41,14 @@ uniform vec3 u_fluenceWeights;
 #endif
 #ifndef AVS_LIGHT_VOLUME_COPY
 // Tube marching goes over the tiles of the target that something reads (Core/LightTiles.h:
-// 8 x 8 x 1 points, the work group), one work group each: x | y << 10 (tile indices) | z << 20.
+// 8 x 8 x 1 points, the work group), one work group each: x | y << 10 (tile indices) | z << 20
+// (vtkAVSTileList: the count and the indirect dispatch before them).
 layout(std430, binding = 0) readonly buffer avs_LightTiles
 {
+  uint u_tileCount;
+  uint u_tileGroups[3];
   uint u_tiles[];
 };
-uniform int u_tileCount;
 #endif
 uniform vec3 u_light;           // propagation direction (directional) or position (positional)
 
@@ -118,7 +120,7 @@ void main()
 #ifdef AVS_LIGHT_VOLUME_COPY
   ivec3 voxel = ivec3(gl_GlobalInvocationID);
 #else
-  int t = int(gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x);
+  uint t = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;
   if (t >= u_tileCount)
   {
     return;

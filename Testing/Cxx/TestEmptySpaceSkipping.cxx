@@ -7,8 +7,10 @@
 // (fence), with a binary mask and a label map, two independent components, two dependent
 // ones, NaN voxels, gradient opacity, split into bricks, jittered, at image sample distance 2,
 // a transfer function whose opacity is a narrow band, a light grid coarse enough that ambient
-// scattering reads its lights once per four samples (unsplit and in bricks), and a small ball in
-// empty space (with the default ambient radius and a large one). The blend
+// scattering reads its lights once per four samples (unsplit and in bricks), a small ball in
+// empty space (with the default ambient radius and a large one), and a dense slab with a radius
+// that makes the extended model's diffusion read the light volumes far outside the rays' tiles
+// (the tiles it reads are flagged on the GPU). The blend
 // modes other than composite and ambient scattering's explicit look-ahead (a radius beyond the
 // ring) do not leap, and say so. One mapper kept through a transfer-function change and new data
 // draws what a mapper without skipping draws. (Against the CPU reference the pictures are compared,
@@ -61,6 +63,12 @@ std::array<double, 4> SmallBall(double x, double y, double z)
 {
   const double r = std::sqrt(x * x + y * y + z * z);
   return { 900.0 * std::clamp((0.35 - r) / 0.1, 0.0, 1.0), 0, 0, 0 };
+}
+
+// A dense slab across the box, x in [-0.8, -0.2].
+std::array<double, 4> DenseSlab(double x, double, double)
+{
+  return { x > -0.8 && x < -0.2 ? 900.0 : 0.0, 0, 0, 0 };
 }
 
 // The shell with NaN voxels in a band through it.
@@ -209,6 +217,25 @@ int main()
       },
       true,
       0.6 });
+  }
+  {
+    // A dense slab with a radius far beyond the rays' reach: the extended model's diffusion
+    // reads the light volumes r downstream of its cells that are not vacuum, outside the tiles
+    // that the rays read (the light-volume pass marches those the GPU flags from those cells).
+    auto slab = MakeTestImage(N);
+    slab->GetPointData()->SetScalars(AddArray(slab, "slab", 1, false, DenseSlab));
+    cases.push_back({ "dense slab, large ambient radius",
+      slab,
+      Property(),
+      [](vtkAVSVolumeMapper* m)
+      {
+        if (auto* as = vtkAmbientScatteringVolumeMapper::SafeDownCast(m))
+        {
+          as->SetAmbientRadius(1.4);
+        }
+      },
+      true,
+      0.4 });
   }
   cases.push_back({ "bricks, lights per four samples",
     Shell(),
