@@ -333,22 +333,26 @@ bool vtkAVSScatteringVolumes::UpdateDiffuse(const vtkAVSPrecomputeInputs& inputs
     volumes.push_back(state.Volume);
   }
   vtkAVSDiffuseVolume& diffuse = caster.GetDiffuseVolume();
-  // The packed fluence is read by the rays alone: where they read the light volumes.
-  const bool done = gpu ? diffuse.Compute(caster.GetWindow(),
-                            avs::DiffusionGeometry(lightGrid, rp.DiffusionVolumeMaximumDimension),
-                            lightGrid.Dimensions,
-                            caster.RayTiles(lightGrid, inputs.SkipEmptySpace && !inputs.LitAsPiece),
-                            caster.GetAveragedExtinctionTexture(),
-                            caster.GetLightVolumeTexture(0),
-                            caster.GetLightVolumeTexture(1),
-                            lights,
-                            rp,
-                            this->AveragedVersion,
-                            error)
-                        : diffuse.Upload(caster.GetWindow(),
-                            avs::ComputeDiffuse(this->Averaged, lights, volumes, rp),
-                            this->Averaged,
-                            error);
+  // The packed fluence is read by the rays alone: where they read the light volumes, and with
+  // anisotropic scattering also at the group before a sample (phi's slope), which may lie
+  // farther from the material (then every tile: an empty list).
+  const bool packRays = inputs.SkipEmptySpace && !inputs.LitAsPiece && rp.Anisotropy == 0.0;
+  const bool done = gpu
+    ? diffuse.Compute(caster.GetWindow(),
+        avs::DiffusionGeometry(lightGrid, rp.DiffusionVolumeMaximumDimension),
+        lightGrid.Dimensions,
+        packRays ? caster.RayTiles(lightGrid, true) : std::vector<std::uint32_t>(),
+        caster.GetAveragedExtinctionTexture(),
+        caster.GetLightVolumeTexture(0),
+        caster.GetLightVolumeTexture(1),
+        lights,
+        rp,
+        this->AveragedVersion,
+        error)
+    : diffuse.Upload(caster.GetWindow(),
+        avs::ComputeDiffuse(this->Averaged, lights, volumes, rp),
+        this->Averaged,
+        error);
   if (!done)
   {
     return false;

@@ -206,6 +206,17 @@ bool vtkAVSDiffuseVolume::ListCells(vtkOpenGLRenderWindow* window,
   vtkAVSRenderPasses::DiscardErrors();
   window->GetShaderCache()->ReleaseCurrentShader();
   const std::size_t entries = ListBase(levels, levels.size());
+  GLint64 largest = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &largest);
+  if (static_cast<double>(entries) * sizeof(std::uint32_t) > static_cast<double>(largest))
+  {
+    error = "the diffusion grid (" + std::to_string(finest[0]) + " x " + std::to_string(finest[1]) +
+      " x " + std::to_string(finest[2]) + ") is too large for the GPU's shader storage blocks (" +
+      std::to_string(largest) + " bytes); lower DiffusionVolumeMaximumDimension";
+    return false;
+  }
+  // (The shaders wrote the lists' headers that are rewritten below.)
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   if (!this->CellBuffer || this->CellEntries != entries)
   {
     if (!this->CellBuffer)
@@ -430,7 +441,7 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
     return false;
   }
   const bool fresh = this->Texture != before || this->Dimensions != lightDimensions;
-  this->Dimensions = lightDimensions;
+  this->Dimensions = { 0, 0, 0 }; // (set again when the texture is packed)
   if (!this->PackTiles.Set(lightDimensions,
         fresh || tiles.empty() ? avs::AllLightTiles(lightDimensions) : tiles,
         error))
@@ -559,6 +570,7 @@ bool vtkAVSDiffuseVolume::Compute(vtkOpenGLRenderWindow* window,
     error = "OpenGL error " + std::to_string(status) + " in the diffusion solve";
     return false;
   }
+  this->Dimensions = lightDimensions;
   ++this->Writes;
   return true;
 }

@@ -54,8 +54,8 @@ public:
   /// vacuum (ListCells, for `averagedVersion`), into the fluence on `grid`
   /// (DiffusionGeometry), then phi interpolated onto the light grid with the averaged extinction
   /// into the texture, over the light grid's `tiles` (Core/LightTiles.h: those that the rays
-  /// read; every tile when the texture is new). `lights` are in the data's frame, as for the
-  /// light volumes.
+  /// read; every tile when `tiles` is empty or the texture new). `lights` are in the data's
+  /// frame, as for the light volumes.
   bool Compute(vtkOpenGLRenderWindow* window,
     const avs::GridGeometry& grid,
     const std::array<int, 3>& lightDimensions,

@@ -44,6 +44,8 @@ bool vtkAVSTileList::Write(const std::array<int, 3>& dimensions,
   std::string& error)
 {
   vtkAVSRenderPasses::DiscardErrors();
+  // (A shader may have written the header that is rewritten below.)
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   if (!this->Buffer)
   {
     glGenBuffers(1, &this->Buffer);
@@ -61,7 +63,6 @@ bool vtkAVSTileList::Write(const std::array<int, 3>& dimensions,
       static_cast<GLsizeiptr>((4 + capacity) * sizeof(std::uint32_t)),
       nullptr,
       GL_DYNAMIC_DRAW);
-    this->Capacity = capacity;
   }
   glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(header), header);
   if (!tiles.empty())
@@ -72,13 +73,16 @@ bool vtkAVSTileList::Write(const std::array<int, 3>& dimensions,
       tiles.data());
   }
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  this->Dimensions = dimensions;
   if (const GLenum status = glGetError())
   {
     error = "a list of tiles could not be uploaded (GL error " + std::to_string(status) + ")";
     this->Uploaded = false;
+    this->Capacity = 0;
+    this->Dimensions = { 0, 0, 0 };
     return false;
   }
+  this->Capacity = capacity;
+  this->Dimensions = dimensions;
   return true;
 }
 

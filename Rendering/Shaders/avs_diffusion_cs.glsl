@@ -168,8 +168,9 @@ void Mark(ivec3 cell)
   if (u_markPositional != 0 && !(length(x - u_markLight) > 0.0))
   {
     // At the light itself (a direction of the spot's axis): anywhere within r.
-    lo = clamp(ivec3(floor((x - u_ambientRadius) / max(u_spacing * vec3(u_dimensions - 1), vec3(1e-30)) * (u_lightDimensions - 1.0))), ivec3(0), last);
-    hi = clamp(ivec3(ceil((x + u_ambientRadius) / max(u_spacing * vec3(u_dimensions - 1), vec3(1e-30)) * (u_lightDimensions - 1.0))), ivec3(0), last);
+    vec3 scale = (u_lightDimensions - 1.0) / max(u_spacing * vec3(u_dimensions - 1), vec3(1e-30));
+    lo = clamp(ivec3(floor((x - u_ambientRadius) * scale - 1e-3)), ivec3(0), last);
+    hi = clamp(ivec3(ceil((x + u_ambientRadius) * scale + 1e-3)), ivec3(0), last);
   }
   for (int z = lo.z; z <= hi.z; ++z)
     for (int ty = lo.y / 8; ty <= hi.y / 8; ++ty)
@@ -244,7 +245,10 @@ void main()
     s_base[c] = count > 0u ? atomicAdd(u_cells[uint(u_listBase) + 6u + c], count) : 0u;
     if (count > 0u)
     {
-      atomicMax(u_cells[uint(u_listBase) + 3u * c], (s_base[c] + count + 63u) / 64u);
+      // Work groups of 64 cells, x then y, 65535 a row at most.
+      uint groups = (s_base[c] + count + 63u) / 64u;
+      atomicMax(u_cells[uint(u_listBase) + 3u * c], min(groups, 65535u));
+      atomicMax(u_cells[uint(u_listBase) + 3u * c + 1u], (groups + 65534u) / 65535u);
     }
   }
   barrier();
@@ -303,7 +307,8 @@ void main()
   Pack(cell);
 #else
   // Stages 1, 3 and 4 go over the list of colour u_colour, 64 cells a work group.
-  uint i = gl_WorkGroupID.x * 64u + gl_LocalInvocationIndex;
+  uint i = (gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x) * 64u +
+    gl_LocalInvocationIndex;
   if (i >= u_cells[uint(u_listBase) + 6u + uint(u_colour)])
   {
     return;

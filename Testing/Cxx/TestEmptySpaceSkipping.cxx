@@ -7,7 +7,8 @@
 // (fence), with a binary mask and a label map, two independent components, two dependent
 // ones, NaN voxels, gradient opacity, split into bricks, jittered, at image sample distance 2,
 // a transfer function whose opacity is a narrow band, a light grid coarse enough that ambient
-// scattering reads its lights once per four samples (unsplit and in bricks), a small ball in
+// scattering reads its lights once per four samples (unsplit and in bricks; with forward
+// scattering, whose diffuse field's slope reads the group before), a small ball in
 // empty space (with the default ambient radius and a large one), and a dense slab with a radius
 // that makes the extended model's diffusion read the light volumes far outside the rays' tiles
 // (the tiles it reads are flagged on the GPU). The blend
@@ -197,6 +198,19 @@ int main()
     }
   };
   cases.push_back({ "lights per four samples", Shell(), Property(), coarseLights });
+  // Forward scattering: the extended model's rays read phi at the group before too, where that
+  // group has no material (its slope along the ray), beyond the light volumes' reach.
+  cases.push_back({ "lights per four samples, forward scattering",
+    Shell(),
+    Property(),
+    [coarseLights](vtkAVSVolumeMapper* m)
+    {
+      coarseLights(m);
+      if (auto* as = vtkAmbientScatteringVolumeMapper::SafeDownCast(m))
+      {
+        as->SetAnisotropy(0.6);
+      }
+    } });
   {
     // A small ball in a box of empty space: the light-volume pass marches only the tiles of the
     // light grid that something reads near occupied cells (LightTiles.h); with a large ambient
@@ -408,6 +422,42 @@ int main()
         std::cerr << "FAIL: the grid did not follow a transfer-function change or new data\n";
         ++failures;
       }
+    }
+  }
+  {
+    // Forward scattering with the lights once per four samples (light cells of 3.3 voxels), kept
+    // from a haze everywhere to the small ball alone: the rays read phi at the group before (its
+    // slope), where that group may have no material, so the fluence must be current there too,
+    // not what the haze left.
+    auto configure = [](vtkAmbientScatteringVolumeMapper* m)
+    {
+      m->SetLightVolumeMaximumDimension(20);
+      m->SetAnisotropy(0.6);
+      m->SetSampleDistance(0.025);
+      m->UseJitteringOff();
+    };
+    vtkNew<vtkAmbientScatteringVolumeMapper> live, fresh;
+    configure(live);
+    configure(fresh);
+    fresh->EmptySpaceSkippingOff();
+    auto haze = Property();
+    vtkNew<vtkPiecewiseFunction> everywhere;
+    everywhere->AddPoint(0, 0.05);
+    everywhere->AddPoint(900, 0.5);
+    haze->SetScalarOpacity(everywhere);
+    auto ballData = MakeTestImage(N);
+    ballData->GetPointData()->SetScalars(AddArray(ballData, "ball", 1, false, SmallBall));
+    live->SetInputData(ballData);
+    RenderVolume(window, renderer, live, haze);
+    auto kept = RenderVolume(window, renderer, live, Property());
+    fresh->SetInputData(ballData);
+    const int most = MaximumDifference(kept, RenderVolume(window, renderer, fresh, Property()));
+    std::cout << "AS forward scattering kept from a haze to the ball: " << most << " levels\n";
+    if (most > 1)
+    {
+      std::cerr << "FAIL: the fluence the rays read at the group before was not current (" << most
+                << " levels)\n";
+      ++failures;
     }
   }
   {
