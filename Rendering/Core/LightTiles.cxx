@@ -17,11 +17,6 @@ std::uint32_t Pack(int tx, int ty, int z)
     (static_cast<std::uint32_t>(z) << 20);
 }
 
-int TilesAlong(int nodes)
-{
-  return (nodes + LightTileSize - 1) / LightTileSize;
-}
-
 // The data index of light node i on an axis of n data points and l light nodes.
 double NodeIndex(int i, int n, int l)
 {
@@ -43,13 +38,27 @@ LightReachBox RayReach(const std::array<int, 3>& dataDimensions,
   return rays;
 }
 
+std::array<int, 3> LightTileCounts(const std::array<int, 3>& l)
+{
+  return {
+    (l[0] + LightTileSize - 1) / LightTileSize, (l[1] + LightTileSize - 1) / LightTileSize, l[2]
+  };
+}
+
+std::size_t NumberOfLightTiles(const std::array<int, 3>& l)
+{
+  const std::array<int, 3> t = LightTileCounts(l);
+  return static_cast<std::size_t>(t[0]) * t[1] * t[2];
+}
+
 std::vector<std::uint32_t> AllLightTiles(const std::array<int, 3>& l)
 {
+  const std::array<int, 3> t = LightTileCounts(l);
   std::vector<std::uint32_t> tiles;
-  tiles.reserve(static_cast<std::size_t>(TilesAlong(l[0])) * TilesAlong(l[1]) * l[2]);
-  for (int z = 0; z < l[2]; ++z)
-    for (int ty = 0; ty < TilesAlong(l[1]); ++ty)
-      for (int tx = 0; tx < TilesAlong(l[0]); ++tx)
+  tiles.reserve(NumberOfLightTiles(l));
+  for (int z = 0; z < t[2]; ++z)
+    for (int ty = 0; ty < t[1]; ++ty)
+      for (int tx = 0; tx < t[0]; ++tx)
         tiles.push_back(Pack(tx, ty, z));
   return tiles;
 }
@@ -59,7 +68,7 @@ std::vector<std::uint32_t> LightGridTiles(const std::vector<float>& occupied,
   int cellSize,
   const std::array<int, 3>& d,
   const std::array<int, 3>& l,
-  const std::vector<LightReachBox>& reach)
+  const LightReachBox& reach)
 {
   const std::size_t count = static_cast<std::size_t>(cells[0]) * cells[1] * cells[2];
   if (occupied.size() != count || count == 0 || cellSize < 1)
@@ -72,35 +81,31 @@ std::vector<std::uint32_t> LightGridTiles(const std::vector<float>& occupied,
     occupied.begin(), occupied.end(), ones.begin(), [](float v) { return v > 0.0f ? 1.0f : 0.0f; });
   const SummedAreaTable sum(ones.data(), cells);
   // The cells [lo, hi] along axis a whose owned indices meet [p0 - low, p1 + high].
-  auto range = [&](int a, double p0, double p1, const LightReachBox& box, int& lo, int& hi)
+  auto range = [&](int a, double p0, double p1, int& lo, int& hi)
   {
-    lo = std::clamp(static_cast<int>(std::floor((p0 - box.Low[a]) / cellSize)), 0, cells[a] - 1);
-    hi = std::clamp(static_cast<int>(std::floor((p1 + box.High[a]) / cellSize)), 0, cells[a] - 1);
+    lo = std::clamp(static_cast<int>(std::floor((p0 - reach.Low[a]) / cellSize)), 0, cells[a] - 1);
+    hi = std::clamp(static_cast<int>(std::floor((p1 + reach.High[a]) / cellSize)), 0, cells[a] - 1);
   };
+  const std::array<int, 3> t = LightTileCounts(l);
   std::vector<std::uint32_t> tiles;
-  for (int z = 0; z < l[2]; ++z)
+  for (int z = 0; z < t[2]; ++z)
   {
     const double pz = NodeIndex(z, d[2], l[2]);
-    for (int ty = 0; ty < TilesAlong(l[1]); ++ty)
+    for (int ty = 0; ty < t[1]; ++ty)
     {
       const double py0 = NodeIndex(ty * LightTileSize, d[1], l[1]);
       const double py1 = NodeIndex(std::min(l[1], (ty + 1) * LightTileSize) - 1, d[1], l[1]);
-      for (int tx = 0; tx < TilesAlong(l[0]); ++tx)
+      for (int tx = 0; tx < t[0]; ++tx)
       {
         const double px0 = NodeIndex(tx * LightTileSize, d[0], l[0]);
         const double px1 = NodeIndex(std::min(l[0], (tx + 1) * LightTileSize) - 1, d[0], l[0]);
-        bool read = false;
-        for (std::size_t b = 0; b < reach.size() && !read; ++b)
-        {
-          std::array<int, 3> lo, hi;
-          range(0, px0, px1, reach[b], lo[0], hi[0]);
-          range(1, py0, py1, reach[b], lo[1], hi[1]);
-          range(2, pz, pz, reach[b], lo[2], hi[2]);
-          // (Clamped: the first and the last cells reach beyond the lattice, as the occupancy
-          // grid's reach the box's border; a box beyond it meets them, which only marches more.)
-          read = sum.BoxSum(lo, hi) > 0.5;
-        }
-        if (read)
+        std::array<int, 3> lo, hi;
+        range(0, px0, px1, lo[0], hi[0]);
+        range(1, py0, py1, lo[1], hi[1]);
+        range(2, pz, pz, lo[2], hi[2]);
+        // (Clamped: the first and the last cells reach beyond the lattice, as the occupancy
+        // grid's reach the box's border; a box beyond it meets them, which only marches more.)
+        if (sum.BoxSum(lo, hi) > 0.5)
         {
           tiles.push_back(Pack(tx, ty, z));
         }

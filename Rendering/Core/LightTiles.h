@@ -10,6 +10,7 @@
 #define avs_LightTiles_h
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -35,7 +36,7 @@ LightReachBox RayReach(const std::array<int, 3>& dataDimensions,
   const std::array<int, 3>& lightDimensions);
 
 /// The tiles of the light grid `lightDimensions` over the lattice `dataDimensions` that hold a
-/// node with an occupied cell in one of its boxes `reach` (RayReach): cells of `cellSize` voxels
+/// node with an occupied cell in its box `reach` (RayReach): cells of `cellSize` voxels
 /// per axis, `cells` of them (x fastest), occupied where `occupied` is above 0 (cell a owns the
 /// indices [a B, (a + 1) B), the first one from minus infinity, the last one to infinity). Each
 /// tile as its x and y tile indices and its z node, x | y << 10 | z << 20, in z, y, x order. Every
@@ -45,10 +46,23 @@ std::vector<std::uint32_t> LightGridTiles(const std::vector<float>& occupied,
   int cellSize,
   const std::array<int, 3>& dataDimensions,
   const std::array<int, 3>& lightDimensions,
-  const std::vector<LightReachBox>& reach);
+  const LightReachBox& reach);
 
 /// Every tile of the light grid `lightDimensions`, in the same order and packing.
 std::vector<std::uint32_t> AllLightTiles(const std::array<int, 3>& lightDimensions);
+
+/// The tiles of the light grid `lightDimensions` along x and along y, and its nodes along z.
+std::array<int, 3> LightTileCounts(const std::array<int, 3>& lightDimensions);
+
+/// How many tiles the light grid `lightDimensions` has.
+std::size_t NumberOfLightTiles(const std::array<int, 3>& lightDimensions);
+
+/// The tile's place in AllLightTiles' order on a grid of `counts` tiles (LightTileCounts).
+inline std::size_t LightTileIndex(std::uint32_t tile, const std::array<int, 3>& counts)
+{
+  return (static_cast<std::size_t>(tile >> 20) * counts[1] + ((tile >> 10) & 1023u)) * counts[0] +
+    (tile & 1023u);
+}
 
 /// The tile's first node.
 inline std::array<int, 3> LightTileOrigin(std::uint32_t tile)

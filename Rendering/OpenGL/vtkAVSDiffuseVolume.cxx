@@ -282,20 +282,13 @@ bool vtkAVSDiffuseVolume::MarkTiles(vtkOpenGLRenderWindow* window,
     return false;
   }
   const std::vector<avs::GridGeometry> levels = avs::DiffusionLevels(grid);
-  // A flag per tile, set for the rays' tiles.
-  const std::array<int, 3> along{ (lightDimensions[0] + avs::LightTileSize - 1) /
-      avs::LightTileSize,
-    (lightDimensions[1] + avs::LightTileSize - 1) / avs::LightTileSize,
-    lightDimensions[2] };
-  const std::size_t count = static_cast<std::size_t>(along[0]) * along[1] * along[2];
+  // A flag per tile (in AllLightTiles' order), set for the rays' tiles.
+  const std::array<int, 3> along = avs::LightTileCounts(lightDimensions);
+  const std::size_t count = avs::NumberOfLightTiles(lightDimensions);
   std::vector<std::uint32_t> flags(count, 0u);
   for (const std::uint32_t t : rayTiles)
   {
-    const std::array<int, 3> o = avs::LightTileOrigin(t);
-    const std::size_t i =
-      (static_cast<std::size_t>(o[2]) * along[1] + o[1] / avs::LightTileSize) * along[0] +
-      o[0] / avs::LightTileSize;
-    flags[std::min(i, count - 1)] = 1u;
+    flags[avs::LightTileIndex(t, along)] = 1u;
   }
   vtkAVSRenderPasses::DiscardErrors();
   window->GetShaderCache()->ReleaseCurrentShader();

@@ -300,7 +300,7 @@ bool vtkAVSRayCaster::UpdateLightTiles(const avs::GridGeometry& lightGrid,
 {
   const std::array<int, 3>& l = lightGrid.Dimensions;
   std::vector<std::uint32_t> tiles = this->RayTiles(lightGrid, skipEmpty);
-  if (!diffusion || tiles.size() == avs::AllLightTiles(l).size())
+  if (!diffusion || tiles.size() == avs::NumberOfLightTiles(l))
   {
     return this->LightVolumePass.SetTiles(l, tiles, error);
   }
@@ -337,12 +337,8 @@ std::vector<std::uint32_t> vtkAVSRayCaster::RayTiles(const avs::GridGeometry& li
   {
     return avs::AllLightTiles(l);
   }
-  return avs::LightGridTiles(this->Textures.MajorantValues,
-    ranges.Cells(),
-    ranges.CellSize(),
-    d,
-    l,
-    { avs::RayReach(d, l) });
+  return avs::LightGridTiles(
+    this->Textures.MajorantValues, ranges.Cells(), ranges.CellSize(), d, l, avs::RayReach(d, l));
 }
 
 bool vtkAVSRayCaster::PackAveraged(int lights, std::string& error)

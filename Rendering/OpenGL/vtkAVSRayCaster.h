@@ -16,7 +16,6 @@
 #include "ClipRegion.h"
 #include "DisplayTransform.h"
 #include "Grid.h"
-#include "LightTiles.h"
 #include "LightVolume.h"
 #include "Lights.h"
 #include "ReferenceRenderer.h"

@@ -35,7 +35,7 @@ bool vtkAVSTileList::Reset(const std::array<int, 3>& dimensions, std::string& er
 {
   this->Held.clear();
   this->Uploaded = false;
-  return this->Write(dimensions, {}, avs::AllLightTiles(dimensions).size(), error);
+  return this->Write(dimensions, {}, avs::NumberOfLightTiles(dimensions), error);
 }
 
 bool vtkAVSTileList::Write(const std::array<int, 3>& dimensions,

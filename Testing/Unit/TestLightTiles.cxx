@@ -18,14 +18,14 @@ using namespace avs;
 
 namespace
 {
-// The tiles with a node that has an occupied cell's owned indices in one of its boxes, node by
-// node (the first cell from minus infinity, the last to infinity).
+// The tiles with a node that has an occupied cell's owned indices in its box, node by node (the
+// first cell from minus infinity, the last to infinity).
 std::set<std::uint32_t> Expected(const std::vector<float>& occupied,
   const std::array<int, 3>& cells,
   int size,
   const std::array<int, 3>& d,
   const std::array<int, 3>& l,
-  const std::vector<LightReachBox>& reach)
+  const LightReachBox& box)
 {
   std::set<std::uint32_t> tiles;
   auto index = [&](int a, int i)
@@ -42,15 +42,14 @@ std::set<std::uint32_t> Expected(const std::vector<float>& occupied,
       for (int x = 0; x < l[0]; ++x)
       {
         bool read = false;
-        for (const LightReachBox& box : reach)
-          for (int k = 0; k < cells[2] && !read; ++k)
-            for (int j = 0; j < cells[1] && !read; ++j)
-              for (int i = 0; i < cells[0] && !read; ++i)
-              {
-                const std::size_t c = (static_cast<std::size_t>(k) * cells[1] + j) * cells[0] + i;
-                read = occupied[c] > 0.0f && meets(0, index(0, x), i, box) &&
-                  meets(1, index(1, y), j, box) && meets(2, index(2, z), k, box);
-              }
+        for (int k = 0; k < cells[2] && !read; ++k)
+          for (int j = 0; j < cells[1] && !read; ++j)
+            for (int i = 0; i < cells[0] && !read; ++i)
+            {
+              const std::size_t c = (static_cast<std::size_t>(k) * cells[1] + j) * cells[0] + i;
+              read = occupied[c] > 0.0f && meets(0, index(0, x), i, box) &&
+                meets(1, index(1, y), j, box) && meets(2, index(2, z), k, box);
+            }
         if (read)
         {
           tiles.insert(static_cast<std::uint32_t>(x / LightTileSize) |
@@ -65,7 +64,7 @@ void Check(const std::vector<float>& occupied,
   const std::array<int, 3>& cells,
   const std::array<int, 3>& d,
   const std::array<int, 3>& l,
-  const std::vector<LightReachBox>& reach)
+  const LightReachBox& reach)
 {
   const std::vector<std::uint32_t> tiles = LightGridTiles(occupied, cells, 8, d, l, reach);
   const std::set<std::uint32_t> got(tiles.begin(), tiles.end());
@@ -98,6 +97,13 @@ TEST(LightTiles, AllTilesCoverTheGridOnce)
   }
   EXPECT_EQ(origins.size(), tiles.size());
   EXPECT_EQ(origins.count({ 16, 8, 2 }), 1u);
+  // Their counts, and each one's place in that order.
+  EXPECT_EQ(LightTileCounts(l), (std::array<int, 3>{ 3, 2, 3 }));
+  EXPECT_EQ(NumberOfLightTiles(l), tiles.size());
+  for (std::size_t i = 0; i < tiles.size(); ++i)
+  {
+    EXPECT_EQ(LightTileIndex(tiles[i], LightTileCounts(l)), i);
+  }
 }
 
 TEST(LightTiles, NodesWithinReachOfOccupiedCells)
@@ -109,35 +115,35 @@ TEST(LightTiles, NodesWithinReachOfOccupiedCells)
   LightReachBox moved = Symmetric(4.0, 6.0, 2.0);
   moved.Low = { 4.0 + 9.0, 6.0 - 3.0, 2.0 + 5.0 };
   moved.High = { 4.0 - 9.0, 6.0 + 3.0, 2.0 - 5.0 };
-  const std::vector<LightReachBox> reach{ Symmetric(5.0, 3.0, 9.5), moved };
-  for (const std::array<int, 3>& l : { std::array<int, 3>{ 32, 20, 12 },
-         std::array<int, 3>{ 64, 40, 24 },
-         std::array<int, 3>{ 21, 13, 5 } })
-  {
-    // None, all, a corner cell, a middle cell.
-    Check(std::vector<float>(n, 0.0f), cells, d, l, reach);
-    EXPECT_TRUE(LightGridTiles(std::vector<float>(n, 0.0f), cells, 8, d, l, reach).empty());
-    Check(std::vector<float>(n, 1.0f), cells, d, l, reach);
-    EXPECT_EQ(LightGridTiles(std::vector<float>(n, 1.0f), cells, 8, d, l, reach).size(),
-      AllLightTiles(l).size());
-    std::vector<float> corner(n, 0.0f);
-    corner[n - 1] = 1.0f;
-    Check(corner, cells, d, l, reach);
-    std::vector<float> middle(n, 0.0f);
-    middle[(1 * 5 + 2) * 8 + 4] = 2.5f;
-    Check(middle, cells, d, l, reach);
-    // A random scatter, a tenth of the cells.
-    std::mt19937 random(7);
-    std::vector<float> scatter(n, 0.0f);
-    for (float& v : scatter)
+  for (const LightReachBox& reach : { Symmetric(5.0, 3.0, 9.5), moved })
+    for (const std::array<int, 3>& l : { std::array<int, 3>{ 32, 20, 12 },
+           std::array<int, 3>{ 64, 40, 24 },
+           std::array<int, 3>{ 21, 13, 5 } })
     {
-      v = random() % 10 == 0 ? 1.0f : 0.0f;
+      // None, all, a corner cell, a middle cell.
+      Check(std::vector<float>(n, 0.0f), cells, d, l, reach);
+      EXPECT_TRUE(LightGridTiles(std::vector<float>(n, 0.0f), cells, 8, d, l, reach).empty());
+      Check(std::vector<float>(n, 1.0f), cells, d, l, reach);
+      EXPECT_EQ(LightGridTiles(std::vector<float>(n, 1.0f), cells, 8, d, l, reach).size(),
+        AllLightTiles(l).size());
+      std::vector<float> corner(n, 0.0f);
+      corner[n - 1] = 1.0f;
+      Check(corner, cells, d, l, reach);
+      std::vector<float> middle(n, 0.0f);
+      middle[(1 * 5 + 2) * 8 + 4] = 2.5f;
+      Check(middle, cells, d, l, reach);
+      // A random scatter, a tenth of the cells.
+      std::mt19937 random(7);
+      std::vector<float> scatter(n, 0.0f);
+      for (float& v : scatter)
+      {
+        v = random() % 10 == 0 ? 1.0f : 0.0f;
+      }
+      Check(scatter, cells, d, l, reach);
     }
-    Check(scatter, cells, d, l, reach);
-  }
   // Occupancy of another size: every tile.
   const std::array<int, 3> l{ 32, 20, 12 };
-  EXPECT_EQ(LightGridTiles(std::vector<float>(5, 0.0f), cells, 8, d, l, reach).size(),
+  EXPECT_EQ(LightGridTiles(std::vector<float>(5, 0.0f), cells, 8, d, l, moved).size(),
     AllLightTiles(l).size());
 }
 
@@ -163,7 +169,7 @@ TEST(LightTiles, ReachOfTheRays)
           x * x + y * y + z * z < 64 ? 1.0f : 0.0f;
       }
   const std::vector<std::uint32_t> tiles =
-    LightGridTiles(ball, cells, 8, cube, grid, { RayReach(cube, grid) });
+    LightGridTiles(ball, cells, 8, cube, grid, RayReach(cube, grid));
   EXPECT_GT(tiles.size(), 0u);
   EXPECT_LT(tiles.size(), AllLightTiles(grid).size() / 4);
 }
